@@ -1,0 +1,245 @@
+"""The ``graphflow`` command.
+
+Exit codes: 0 success; 1 run-time failure (a node failed, a runaway loop);
+2 bad input or usage (malformed graph, unknown node type, bad stage, bad
+arguments). Errors are one line each on stderr, without a traceback unless
+``--log-level debug`` is given.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import logging
+import random
+import sys
+import time
+from pathlib import Path
+
+from . import __version__
+from .document import GraphError, load_document, parse_document, save_document
+from .executor import GraphRuntimeError, LogEvent
+from .registry import default_registry
+
+EXIT_OK, EXIT_RUNTIME, EXIT_BAD_INPUT = 0, 1, 2
+PROGRESS_AFTER_SECONDS = 2.0
+
+
+class BadInput(Exception):
+    """Reported as one line with exit code 2."""
+
+
+def _print_log_event(event: LogEvent) -> None:
+    if event.level in ("warning", "warn", "error"):
+        print(f"{event.level.upper()}: {event.node}: {event.message}", file=sys.stderr)
+    else:
+        print(event.message, flush=True)
+
+
+class _Progress:
+    """A status line on a terminal for runs longer than a few seconds; silent otherwise."""
+
+    def __init__(self, simulation, enabled: bool):
+        self.simulation = simulation
+        self.enabled = enabled
+        self.started = time.perf_counter()
+        self.last_shown = 0.0
+        self.shown = False
+
+    def __call__(self, count: int, limit: int | None) -> None:
+        if not self.enabled or count % 32:
+            return
+        now = time.perf_counter()
+        elapsed = now - self.started
+        if elapsed < PROGRESS_AFTER_SECONDS or now - self.last_shown < 0.25:
+            return
+        self.last_shown = now
+        total = f"/{limit}" if limit else ""
+        rate = count / elapsed
+        sys.stderr.write(f"\r  t = {self.simulation.world.time:8.3f} s   tick {count}{total}   {rate:7.0f} ticks/s ")
+        sys.stderr.flush()
+        self.shown = True
+
+    def finish(self) -> None:
+        if self.shown:
+            sys.stderr.write("\n")
+
+
+def _load(path: str):
+    try:
+        return load_document(path)
+    except GraphError as error:
+        raise BadInput(str(error)) from None
+
+
+def command_run(args) -> int:
+    from .runtime import Simulation
+
+    document = _load(args.graph)
+    random.seed(args.seed)
+    try:
+        import numpy
+
+        numpy.random.seed(args.seed)
+    except ImportError:
+        pass
+    try:
+        simulation = Simulation(document, gui=args.gui, on_log=_print_log_event)
+    except (ValueError, OSError) as error:
+        raise BadInput(f"{args.graph}: {error}") from None
+    seconds = args.seconds
+    if args.ticks is None and seconds is None:
+        seconds = document.settings.get("duration")
+    progress = _Progress(simulation, sys.stdout.isatty())
+    started = time.perf_counter()
+    try:
+        result = simulation.run(ticks=args.ticks, seconds=seconds, progress=progress)
+    except KeyboardInterrupt:
+        progress.finish()
+        print("graphflow: interrupted", file=sys.stderr)
+        return EXIT_RUNTIME
+    finally:
+        simulation.close()
+    progress.finish()
+    wall = time.perf_counter() - started
+    reason = "graph finished" if result.stopped_by_graph else "limit reached"
+    logging.getLogger("graphflow").info("%s: %d ticks, %.3f s simulated in %.2f s wall (%s)",
+                                        args.graph, result.ticks, result.time, wall, reason)
+    return EXIT_OK
+
+
+def command_validate(args) -> int:
+    failed = False
+    for path in args.graphs:
+        try:
+            load_document(path)
+            print(f"{path}: ok")
+        except GraphError as error:
+            failed = True
+            for problem in error.problems:
+                print(problem, file=sys.stderr)
+    return EXIT_BAD_INPUT if failed else EXIT_OK
+
+
+def command_nodes(args) -> int:
+    types = default_registry().types()
+    if args.json:
+        print(json.dumps([t.spec.to_json() for t in types], indent=2))
+        return EXIT_OK
+    width = max(len(t.spec.id) for t in types)
+    for node_type in types:
+        summary = node_type.spec.description.split(". ")[0].rstrip(".")
+        print(f"{node_type.spec.id:<{width}}  v{node_type.spec.version}  {summary}")
+    return EXIT_OK
+
+
+STARTER_GRAPH = {
+    "format": "graphflow",
+    "formatVersion": [1, 0],
+    "description": "Starter graph: counts ticks and prints every tick's count until 1 s of simulated time.",
+    "settings": {"duration": 1.0, "evaluator": "execution", "timeStep": 0.1},
+    "nodes": [
+        {"name": "on_tick", "type": "omni.graph.action.OnTick"},
+        {"name": "counter", "type": "omni.graph.action.Counter"},
+        {"name": "print", "type": "omni.graph.ui_nodes.PrintText", "inputs": {"text": "tick"}},
+    ],
+    "connections": [
+        {"src": "on_tick.outputs:tick", "dst": "counter.inputs:execIn"},
+        {"src": "counter.outputs:execOut", "dst": "print.inputs:execIn"},
+    ],
+}
+
+
+def command_new(args) -> int:
+    target = Path(args.name if args.name.endswith(".json") else f"{args.name}.json")
+    if target.exists():
+        raise BadInput(f"{target}: already exists; not overwriting it")
+    if not target.parent.exists():
+        raise BadInput(f"{target}: folder {target.parent} does not exist")
+    save_document(parse_document(json.loads(json.dumps(STARTER_GRAPH)), str(target)), target)
+    print(f"wrote {target}")
+    return EXIT_OK
+
+
+def command_stage(args) -> int:
+    from .physics.inspect import run_stage_command
+
+    return run_stage_command(args.stage, as_json=args.json, simulate_seconds=args.simulate)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="graphflow", description="Run, check and inspect graphflow action graphs.")
+    parser.add_argument("--version", action="version", version=f"graphflow {__version__}")
+    commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    run = commands.add_parser("run", help="run a graph (headless unless --gui)")
+    run.add_argument("graph", help="graph JSON file")
+    run.add_argument("--ticks", type=_positive_int, help="stop after N ticks")
+    run.add_argument("--seconds", type=_positive_float, help="stop after S simulated seconds")
+    run.add_argument("--seed", type=int, default=0, help="seed for random number generators (default 0)")
+    run.add_argument("--gui", action="store_true", help="open the PyBullet window")
+    run.add_argument("--log-level", default="warning", choices=["debug", "info", "warning", "error"],
+                     help="Python logging level on stderr (default warning)")
+    run.set_defaults(handler=command_run)
+
+    validate = commands.add_parser("validate", help="check graph files; print every problem")
+    validate.add_argument("graphs", nargs="+", metavar="GRAPH")
+    validate.set_defaults(handler=command_validate)
+
+    nodes = commands.add_parser("nodes", help="list the registered node types")
+    nodes.add_argument("--json", action="store_true", help="print every node spec as JSON")
+    nodes.set_defaults(handler=command_nodes)
+
+    new = commands.add_parser("new", help="write a starter graph")
+    new.add_argument("name", help="file name (.json is added if missing)")
+    new.set_defaults(handler=command_new)
+
+    stage = commands.add_parser("stage", help="show what the importer makes of a USD stage")
+    stage.add_argument("stage", help=".usda / .usd file")
+    stage.add_argument("--json", action="store_true", help="print one JSON object")
+    stage.add_argument("--simulate", type=_positive_float, metavar="SECONDS",
+                       help="step the stage with drives at their targets and report how far bodies moved")
+    stage.set_defaults(handler=command_stage)
+    return parser
+
+
+def _positive_int(text: str) -> int:
+    value = int(text)
+    if value <= 0:
+        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text}")
+    return value
+
+
+def _positive_float(text: str) -> float:
+    value = float(text)
+    if not value > 0:
+        raise argparse.ArgumentTypeError(f"expected a positive number, got {text}")
+    return value
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    level = getattr(args, "log_level", "warning")
+    logging.basicConfig(level=level.upper(), format="%(levelname)s %(name)s: %(message)s", stream=sys.stderr)
+    debug = level == "debug"
+    try:
+        return args.handler(args)
+    except BrokenPipeError:  # output piped into head & co.: not an error
+        sys.stderr.close()
+        return EXIT_OK
+    except BadInput as error:
+        print(f"graphflow: error: {error}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except GraphRuntimeError as error:
+        if debug:
+            raise
+        print(f"graphflow: run-time error: {error}", file=sys.stderr)
+        return EXIT_RUNTIME
+    except Exception as error:  # last resort: one line, never a traceback unless debugging
+        if debug:
+            raise
+        print(f"graphflow: unexpected error: {type(error).__name__}: {error}", file=sys.stderr)
+        return EXIT_RUNTIME
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,366 @@
+"""Graph documents: the JSON file format, its validation, and atomic saving.
+
+A ``GraphDocument`` is immutable and holds authored values exactly as written,
+so load -> save -> load is byte-identical. Validation reports every problem of
+a file at once, each as one line naming the file, node and attribute.
+"""
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from dataclasses import dataclass, field
+from functools import lru_cache
+from importlib import resources
+from pathlib import Path
+from types import MappingProxyType
+from typing import Any, Mapping
+
+import networkx as nx
+
+from .registry import Registry, default_registry
+from .spec import NodeType
+from .types import TypeMismatch, can_connect, parse_type
+
+FORMAT_NAME = "graphflow"
+FORMAT_VERSION = (1, 0)
+
+
+@dataclass(frozen=True)
+class Problem:
+    """One thing wrong with a graph file."""
+
+    file: str
+    message: str
+    node: str | None = None
+    attribute: str | None = None
+    kind: str = "input"  # how the attribute is named in the message: input, output, connection, variable
+
+    def __str__(self) -> str:
+        locator = []
+        if self.node is not None:
+            locator.append(f"node '{self.node}'")
+        if self.attribute is not None:
+            locator.append(f"{self.kind} '{self.attribute}'")
+        if locator:
+            return f"{self.file}: {' '.join(locator)}: {self.message}"
+        return f"{self.file}: {self.message}"
+
+
+class GraphError(ValueError):
+    """A graph file could not be loaded; ``problems`` lists every reason."""
+
+    def __init__(self, problems: list[Problem]):
+        self.problems = problems
+        super().__init__("\n".join(str(p) for p in problems))
+
+
+def _frozen(mapping: Mapping) -> Mapping:
+    return MappingProxyType(dict(mapping))
+
+
+@dataclass(frozen=True)
+class NodeDoc:
+    name: str
+    type: str
+    type_version: int | None = None
+    inputs: Mapping[str, Any] = field(default_factory=dict)
+    description: str = ""
+
+
+@dataclass(frozen=True)
+class Connection:
+    src_node: str
+    src_attr: str   # "outputs:x"
+    dst_node: str
+    dst_attr: str   # "inputs:y"
+
+    @property
+    def src(self) -> str:
+        return f"{self.src_node}.{self.src_attr}"
+
+    @property
+    def dst(self) -> str:
+        return f"{self.dst_node}.{self.dst_attr}"
+
+
+@dataclass(frozen=True)
+class Variable:
+    name: str
+    type: str
+    default: Any = None
+    description: str = ""
+
+
+@dataclass(frozen=True)
+class GraphDocument:
+    """A graph as authored; no runtime state."""
+
+    nodes: tuple[NodeDoc, ...]
+    connections: tuple[Connection, ...] = ()
+    variables: tuple[Variable, ...] = ()
+    settings: Mapping[str, Any] = field(default_factory=dict)
+    description: str = ""
+    ui: Mapping[str, Any] = field(default_factory=dict)
+    format_version: tuple[int, int] = FORMAT_VERSION
+    source: str = "<graph>"   # the file it came from, for messages and relative stage paths
+
+    def node(self, name: str) -> NodeDoc | None:
+        return next((n for n in self.nodes if n.name == name), None)
+
+    @property
+    def base_dir(self) -> Path:
+        return Path(self.source).resolve().parent if self.source != "<graph>" else Path.cwd()
+
+    def to_json(self) -> dict:
+        data: dict[str, Any] = {"format": FORMAT_NAME, "formatVersion": list(self.format_version)}
+        if self.description:
+            data["description"] = self.description
+        if self.settings:
+            data["settings"] = dict(self.settings)
+        if self.variables:
+            data["variables"] = [_variable_json(v) for v in self.variables]
+        data["nodes"] = [_node_json(n) for n in self.nodes]
+        if self.connections:
+            data["connections"] = [{"src": c.src, "dst": c.dst} for c in self.connections]
+        if self.ui:
+            data["ui"] = dict(self.ui)
+        return data
+
+
+def _node_json(node: NodeDoc) -> dict:
+    entry: dict[str, Any] = {"name": node.name, "type": node.type}
+    if node.type_version is not None:
+        entry["typeVersion"] = node.type_version
+    if node.inputs:
+        entry["inputs"] = dict(node.inputs)
+    if node.description:
+        entry["description"] = node.description
+    return entry
+
+
+def _variable_json(variable: Variable) -> dict:
+    entry: dict[str, Any] = {"name": variable.name, "type": variable.type}
+    if variable.default is not None:
+        entry["default"] = variable.default
+    if variable.description:
+        entry["description"] = variable.description
+    return entry
+
+
+@lru_cache(maxsize=1)
+def json_schema() -> dict:
+    """The published JSON Schema of the graph format (also shipped as graphflow/schema/graph.schema.json)."""
+    text = resources.files("graphflow").joinpath("schema/graph.schema.json").read_text(encoding="utf-8")
+    return json.loads(text)
+
+
+def _schema_problems(data: Any, source: str) -> list[Problem]:
+    import jsonschema
+
+    validator = jsonschema.Draft202012Validator(json_schema())
+    problems = []
+    for error in sorted(validator.iter_errors(data), key=lambda e: [str(p) for p in e.absolute_path]):
+        path = error.absolute_path
+        node_name = None
+        if len(path) >= 2 and path[0] == "nodes" and isinstance(data, dict):
+            try:
+                node_name = data["nodes"][path[1]].get("name")
+            except (IndexError, AttributeError, KeyError, TypeError):
+                node_name = None
+        location = "/".join(str(p) for p in path) or "document"
+        if node_name:
+            problems.append(Problem(source, f"{location}: {error.message}", node=node_name, attribute=None))
+        else:
+            problems.append(Problem(source, f"{location}: {error.message}"))
+    return problems
+
+
+def parse_document(data: Any, source: str = "<graph>", registry: Registry | None = None) -> GraphDocument:
+    """Build and validate a document from parsed JSON; raise GraphError listing every problem."""
+    problems = _schema_problems(data, source)
+    if problems:
+        raise GraphError(problems)
+    major = data["formatVersion"][0]
+    if major != FORMAT_VERSION[0]:
+        raise GraphError([Problem(source, f"formatVersion {data['formatVersion']} is not supported (this runtime reads {FORMAT_VERSION[0]}.x)")])
+    document = GraphDocument(
+        nodes=tuple(NodeDoc(n["name"], n["type"], n.get("typeVersion"), _frozen(n.get("inputs", {})),
+                            n.get("description", "")) for n in data["nodes"]),
+        connections=tuple(_parse_connection(c) for c in data.get("connections", [])),
+        variables=tuple(Variable(v["name"], v["type"], v.get("default"), v.get("description", ""))
+                        for v in data.get("variables", [])),
+        settings=_frozen(data.get("settings", {})),
+        description=data.get("description", ""),
+        ui=_frozen(data.get("ui", {})),
+        format_version=tuple(data["formatVersion"]),
+        source=source,
+    )
+    problems = validate(document, registry)
+    if problems:
+        raise GraphError(problems)
+    return document
+
+
+def _parse_connection(entry: dict) -> Connection:
+    src_node, src_attr = entry["src"].split(".", 1)
+    dst_node, dst_attr = entry["dst"].split(".", 1)
+    return Connection(src_node, src_attr, dst_node, dst_attr)
+
+
+def load_document(path: str | os.PathLike, registry: Registry | None = None) -> GraphDocument:
+    """Read and validate a graph file."""
+    source = str(path)
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise GraphError([Problem(source, "file not found")]) from None
+    except (OSError, UnicodeDecodeError) as error:
+        raise GraphError([Problem(source, f"cannot read file: {error}")]) from None
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as error:
+        raise GraphError([Problem(source, f"malformed JSON at line {error.lineno} column {error.colno}: {error.msg}")]) from None
+    return parse_document(data, source, registry)
+
+
+def dumps(document: GraphDocument) -> str:
+    """The canonical text of a document: pretty-printed, sorted keys, trailing newline."""
+    return json.dumps(document.to_json(), indent=2, sort_keys=True, ensure_ascii=False) + "\n"
+
+
+def save_document(document: GraphDocument, path: str | os.PathLike) -> None:
+    """Write atomically: a temporary file in the same folder, then rename over the target."""
+    target = Path(path)
+    text = dumps(document)
+    handle, temporary = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent or ".")
+    try:
+        with os.fdopen(handle, "w", encoding="utf-8") as stream:
+            stream.write(text)
+            stream.flush()
+            os.fsync(stream.fileno())
+        os.replace(temporary, target)
+    except BaseException:
+        if os.path.exists(temporary):
+            os.unlink(temporary)
+        raise
+
+
+# ---------------------------------------------------------------- validation
+
+def validate(document: GraphDocument, registry: Registry | None = None) -> list[Problem]:
+    """Every semantic problem of a document (the schema was already checked)."""
+    registry = registry or default_registry()
+    source = document.source
+    problems: list[Problem] = []
+    types: dict[str, NodeType] = {}
+
+    seen: set[str] = set()
+    for node in document.nodes:
+        if node.name in seen:
+            problems.append(Problem(source, "duplicate node name", node=node.name))
+        seen.add(node.name)
+        node_type = registry.get(node.type)
+        if node_type is None:
+            hint = registry.suggest(node.type)
+            problems.append(Problem(source, f"unknown node type {node.type!r}" + (f" (did you mean {hint!r}?)" if hint else ""), node=node.name))
+            continue
+        types[node.name] = node_type
+        problems.extend(_node_problems(source, node, node_type))
+
+    problems.extend(_variable_problems(source, document.variables))
+    problems.extend(_connection_problems(source, document, types))
+    return problems
+
+
+def _node_problems(source: str, node: NodeDoc, node_type: NodeType) -> list[Problem]:
+    spec = node_type.spec
+    problems = []
+    if node.type_version is not None and not spec.accepts_version(node.type_version):
+        problems.append(Problem(source, f"typeVersion {node.type_version} of {spec.id} is not supported (this runtime has version {spec.version})", node=node.name))
+    for name, value in node.inputs.items():
+        qualified = f"inputs:{name}"
+        attribute = spec.attribute(qualified)
+        if attribute is None:
+            problems.append(Problem(source, f"{spec.id} has no such input", node=node.name, attribute=qualified))
+            continue
+        if attribute.is_execution:
+            problems.append(Problem(source, "execution inputs take connections, not values", node=node.name, attribute=qualified))
+            continue
+        try:
+            attribute.check(value)
+        except TypeMismatch as error:
+            problems.append(Problem(source, str(error), node=node.name, attribute=qualified))
+    if node_type.validate is not None and not problems:
+        for message in node_type.validate(node.name, dict(node.inputs)):
+            problems.append(Problem(source, message, node=node.name))
+    return problems
+
+
+def _variable_problems(source: str, variables) -> list[Problem]:
+    problems, seen = [], set()
+    for variable in variables:
+        if variable.name in seen:
+            problems.append(Problem(source, "duplicate variable name", attribute=variable.name, kind="variable"))
+        seen.add(variable.name)
+        try:
+            attr_type = parse_type(variable.type)
+        except ValueError as error:
+            problems.append(Problem(source, str(error), attribute=variable.name, kind="variable"))
+            continue
+        if variable.default is not None:
+            try:
+                attr_type.coerce(variable.default)
+            except TypeMismatch as error:
+                problems.append(Problem(source, f"default: {error}", attribute=variable.name, kind="variable"))
+    return problems
+
+
+def _connection_problems(source: str, document: GraphDocument, types: dict[str, NodeType]) -> list[Problem]:
+    problems = []
+    names = {n.name for n in document.nodes}
+    data_sources: dict[tuple[str, str], list[str]] = {}
+    data_graph = nx.DiGraph()
+    for connection in document.connections:
+        label = f"{connection.src} -> {connection.dst}"
+        endpoints = []
+        for node_name, attr_name in ((connection.src_node, connection.src_attr), (connection.dst_node, connection.dst_attr)):
+            if node_name not in names:
+                problems.append(Problem(source, f"dangling connection {label}: no node named '{node_name}'", node=node_name, attribute=attr_name, kind="connection"))
+                endpoints.append(None)
+                continue
+            node_type = types.get(node_name)
+            if node_type is None:
+                endpoints.append(None)  # the unknown type was already reported
+                continue
+            attribute = node_type.spec.attribute(attr_name)
+            if attribute is None:
+                problems.append(Problem(source, f"dangling connection {label}: {node_type.spec.id} has no attribute '{attr_name}'", node=node_name, attribute=attr_name, kind="connection"))
+            endpoints.append(attribute)
+        src_attribute, dst_attribute = endpoints
+        if src_attribute is None or dst_attribute is None:
+            continue
+        if not can_connect(src_attribute.attr_type, dst_attribute.attr_type):
+            problems.append(Problem(source, f"type mismatch in {label}: {src_attribute.type} cannot feed {dst_attribute.type}", node=connection.dst_node, attribute=connection.dst_attr, kind="connection"))
+            continue
+        if not dst_attribute.is_execution:
+            data_sources.setdefault((connection.dst_node, connection.dst_attr), []).append(connection.src)
+            data_graph.add_edge(connection.src_node, connection.dst_node)
+    for (node_name, attr_name), sources in data_sources.items():
+        if len(sources) > 1:
+            problems.append(Problem(source, f"more than one source into a data input: {', '.join(sources)}", node=node_name, attribute=attr_name, kind="connection"))
+    for cycle in _data_cycles(data_graph):
+        problems.append(Problem(source, f"data cycle: {' -> '.join(cycle + [cycle[0]])}", node=cycle[0]))
+    return problems
+
+
+def _data_cycles(graph: nx.DiGraph) -> list[list[str]]:
+    """One cycle per strongly connected component that loops (deterministic order)."""
+    cycles = []
+    for component in nx.strongly_connected_components(graph):
+        members = sorted(component)
+        if len(members) == 1 and not graph.has_edge(members[0], members[0]):
+            continue
+        cycle = nx.find_cycle(graph.subgraph(members), source=members[0])
+        cycles.append([edge[0] for edge in cycle])
+    return sorted(cycles)
