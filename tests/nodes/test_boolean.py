@@ -1,0 +1,31 @@
+"""omni.graph.nodes.BooleanAnd / BooleanOr / BooleanNot."""
+import pytest
+
+from graphflow.executor import GraphRuntimeError
+from graphflow.testing import NodeHarness
+
+
+@pytest.mark.parametrize("a, b", [(False, False), (False, True), (True, False), (True, True)])
+def test_truth_tables(a, b):
+    inputs = {"a": a, "b": b}
+    assert NodeHarness("omni.graph.nodes.BooleanAnd", inputs=inputs).compute().outputs["result"] is (a and b)
+    assert NodeHarness("omni.graph.nodes.BooleanOr", inputs=inputs).compute().outputs["result"] is (a or b)
+
+
+def test_not():
+    assert NodeHarness("omni.graph.nodes.BooleanNot", inputs={"valueIn": True}).compute().outputs["valueOut"] is False
+    assert NodeHarness("omni.graph.nodes.BooleanNot").compute().outputs["valueOut"] is True  # unset reads false
+
+
+def test_arrays_elementwise_and_single_bool_broadcast():
+    r = NodeHarness("omni.graph.nodes.BooleanAnd", inputs={"a": [True, False, True], "b": True}).compute()
+    assert r.outputs["result"] == (True, False, True)
+    r = NodeHarness("omni.graph.nodes.BooleanOr", inputs={"a": [True, False], "b": [False, False]}).compute()
+    assert r.outputs["result"] == (True, False)
+    r = NodeHarness("omni.graph.nodes.BooleanNot", inputs={"valueIn": [True, False]}).compute()
+    assert r.outputs["valueOut"] == (False, True)
+
+
+def test_non_bool_is_an_error():
+    with pytest.raises(GraphRuntimeError, match="inputs:a must hold bools"):
+        NodeHarness("omni.graph.nodes.BooleanAnd", inputs={"a": 0.5, "b": True}).compute()
