@@ -1,0 +1,101 @@
+"""The graphflow command: outputs and exit codes (0 ok, 1 run-time failure, 2 bad input)."""
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def graphflow(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "graphflow.cli", *args], capture_output=True, text=True, cwd=cwd)
+
+
+def test_core_demo_prints_its_lines_and_stops_on_its_own():
+    result = graphflow("run", str(ROOT / "graphs" / "counter_branch_print.json"))
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.splitlines() == ["count = 1", "count = 2", "count reached 3: done"]
+    assert "Traceback" not in result.stderr
+
+
+def test_tick_limit_stops_the_run_early():
+    result = graphflow("run", str(ROOT / "graphs" / "counter_branch_print.json"), "--ticks", "2")
+    assert result.returncode == 0
+    assert result.stdout.splitlines() == ["count = 1", "count = 2"]
+
+
+def test_validate_prints_every_mistake_one_line_each(tmp_path):
+    bad = tmp_path / "bad.json"
+    bad.write_text(json.dumps({"format": "graphflow", "formatVersion": [1, 0], "nodes": [
+        {"name": "tick", "type": "omni.graph.action.OnTick"},
+        {"name": "gripper", "type": "omni.graph.action.Branch", "inputs": {"condition": "yes"}},
+        {"name": "mystery", "type": "acme.Teleport"}],
+        "connections": [{"src": "tick.outputs:tick", "dst": "nowhere.inputs:execIn"}]}))
+    good = ROOT / "graphs" / "counter_branch_print.json"
+    result = graphflow("validate", str(good), str(bad))
+    assert result.returncode == 2
+    assert result.stdout.splitlines() == [f"{good}: ok"]
+    lines = result.stderr.splitlines()
+    assert lines == [
+        f"{bad}: node 'gripper' input 'inputs:condition': expected bool, got \"yes\"",
+        f"{bad}: node 'mystery': unknown node type 'acme.Teleport'",
+        f"{bad}: node 'nowhere' connection 'inputs:execIn': dangling connection tick.outputs:tick -> nowhere.inputs:execIn: no node named 'nowhere'",
+    ]
+
+
+def test_bad_graph_on_run_exits_2_without_traceback(tmp_path):
+    broken = tmp_path / "broken.json"
+    broken.write_text("{ not json")
+    result = graphflow("run", str(broken))
+    assert result.returncode == 2
+    assert result.stderr.startswith(f"graphflow: error: {broken}: malformed JSON at line 1 column 3")
+    assert "Traceback" not in result.stderr
+
+
+def test_runtime_failure_exits_1_naming_the_node(tmp_path):
+    looping = tmp_path / "loop.json"
+    looping.write_text(json.dumps({"format": "graphflow", "formatVersion": [1, 0], "settings": {"stepBudget": 100},
+        "nodes": [{"name": "tick", "type": "omni.graph.action.OnTick"},
+                  {"name": "ping", "type": "omni.graph.action.Counter"},
+                  {"name": "pong", "type": "omni.graph.action.Counter"}],
+        "connections": [{"src": "tick.outputs:tick", "dst": "ping.inputs:execIn"},
+                        {"src": "ping.outputs:execOut", "dst": "pong.inputs:execIn"},
+                        {"src": "pong.outputs:execOut", "dst": "ping.inputs:execIn"}]}))
+    result = graphflow("run", str(looping), "--ticks", "3")
+    assert result.returncode == 1
+    assert "runaway execution loop through" in result.stderr and "ping" in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+
+
+def test_usage_errors_exit_2():
+    assert graphflow("run").returncode == 2
+    assert graphflow("run", "x.json", "--ticks", "-3").returncode == 2
+    assert graphflow("frobnicate").returncode == 2
+
+
+def test_nodes_json_lists_every_spec():
+    result = graphflow("nodes", "--json")
+    assert result.returncode == 0
+    specs = {spec["id"]: spec for spec in json.loads(result.stdout)}
+    branch = specs["omni.graph.action.Branch"]
+    assert branch["version"] == 1
+    assert {"name": "condition", "type": "bool", "default": False} == {k: branch["inputs"][1][k] for k in ("name", "type", "default")}
+    assert [o["name"] for o in branch["outputs"]] == ["execTrue", "execFalse"]
+    plain = graphflow("nodes").stdout.splitlines()
+    assert len(plain) == len(specs)
+
+
+def test_new_writes_a_runnable_starter_and_never_overwrites(tmp_path):
+    result = graphflow("new", "starter", cwd=tmp_path)
+    assert result.returncode == 0
+    starter = tmp_path / "starter.json"
+    run = graphflow("run", str(starter))
+    assert run.returncode == 0
+    assert run.stdout.splitlines() == ["tick"] * 10
+    starter.write_text("my edits\n")
+    again = graphflow("new", "starter", cwd=tmp_path)
+    assert again.returncode == 2
+    assert "already exists" in again.stderr
+    assert starter.read_text() == "my edits\n"
