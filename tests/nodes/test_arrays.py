@@ -1,0 +1,82 @@
+"""omni.graph.nodes.ConstructArray and ArrayIndex."""
+import pytest
+
+from graphflow.document import GraphError
+from graphflow.executor import GraphRuntimeError
+from graphflow.testing import GraphHarness, NodeHarness
+
+
+def _construct(**inputs):
+    return NodeHarness("omni.graph.nodes.ConstructArray", inputs=inputs).compute().outputs["array"]
+
+
+def test_krabby_style_double_array_converts_ints_and_fills_unset_with_zero():
+    # as in krabby crab_simple.usda: arraySize 18, arrayType "double[]", input0 unset
+    inputs = {"arraySize": 18, "arrayType": "double[]"}
+    inputs.update({f"input{i}": i for i in range(1, 18)})
+    array = _construct(**inputs)
+    assert array == tuple(float(i) for i in range(18))
+    assert all(type(v) is float for v in array)
+
+
+def test_token_array_of_joint_names():
+    names = ["FL_Body_Hip", "FL_Hip_Femur", "FL_Femur_Tibia"]
+    array = _construct(arraySize=3, arrayType="token[]", **{f"input{i}": n for i, n in enumerate(names)})
+    assert array == tuple(names)
+
+
+def test_auto_type_keeps_elements_and_only_uses_array_size_inputs():
+    assert _construct(arraySize=2, input0=[1.0, 0.0, 0.0], input1=[0.0, 1.0, 0.0], input2=5) == (
+        (1.0, 0.0, 0.0), (0.0, 1.0, 0.0))
+    assert _construct(arraySize=0) == ()
+
+
+def test_all_32_inputs_are_available():
+    assert _construct(arraySize=32, arrayType="int[]", input31=31)[31] == 31
+
+
+def test_auto_type_with_an_unset_input_is_an_error_naming_it():
+    with pytest.raises(GraphRuntimeError, match="inputs:input1 has no value"):
+        _construct(arraySize=2, input0=1.0)
+
+
+def test_element_that_does_not_fit_the_array_type_is_an_error():
+    with pytest.raises(GraphRuntimeError, match="inputs:input0 does not fit arrayType double\\[3\\]\\[\\]"):
+        _construct(arraySize=1, arrayType="double[3][]", input0=[1.0, 2.0])
+
+
+def test_array_size_out_of_range_is_rejected_at_load():
+    with pytest.raises(GraphError, match="inputs:arraySize"):
+        NodeHarness("omni.graph.nodes.ConstructArray", inputs={"arraySize": 33})
+
+
+def test_array_index_reads_elements_including_negative_indices():
+    h = NodeHarness("omni.graph.nodes.ArrayIndex", inputs={"array": [10, 20, 30]})
+    assert h.compute(index=0).outputs["value"] == 10
+    assert h.compute(index=2).outputs["value"] == 30
+    assert h.compute(index=-1).outputs["value"] == 30
+
+
+@pytest.mark.parametrize("index", [3, -4])
+def test_array_index_out_of_range_is_an_error(index):
+    with pytest.raises(GraphRuntimeError, match=f"inputs:index {index} is out of range for an array of 3"):
+        NodeHarness("omni.graph.nodes.ArrayIndex", inputs={"array": [1, 2, 3], "index": index}).compute()
+
+
+def test_construct_then_index_in_a_graph():
+    g = GraphHarness({
+        "nodes": [
+            {"name": "tick", "type": "omni.graph.action.OnTick"},
+            {"name": "arr", "type": "omni.graph.nodes.ConstructArray",
+             "inputs": {"arraySize": 3, "arrayType": "token[]", "input0": "a", "input1": "b", "input2": "c"}},
+            {"name": "at", "type": "omni.graph.nodes.ArrayIndex", "inputs": {"index": 1}},
+            {"name": "print", "type": "omni.graph.ui_nodes.PrintText"},
+        ],
+        "connections": [
+            {"src": "tick.outputs:tick", "dst": "print.inputs:execIn"},
+            {"src": "arr.outputs:array", "dst": "at.inputs:array"},
+            {"src": "at.outputs:value", "dst": "print.inputs:text"},
+        ],
+    })
+    g.run(ticks=1)
+    assert g.logs == ["b"]
