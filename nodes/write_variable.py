@@ -1,6 +1,6 @@
 """omni.graph.core.WriteVariable: set a graph variable when pulsed."""
 from graphflow.spec import Attribute, NodeSpec
-from graphflow.types import ExecState
+from graphflow.types import ExecState, TypeMismatch
 
 SPEC = NodeSpec(
     id="omni.graph.core.WriteVariable",
@@ -8,7 +8,9 @@ SPEC = NodeSpec(
     compatible_versions=(1,),
     description=(
         "On an execIn pulse, sets the graph variable named by variableName to "
-        "'value', passes the value through on outputs:value and fires execOut."),
+        "'value' (converted to the variable's type), passes the stored value through on"
+        " outputs:value and fires execOut. An unset value or one that does not fit the"
+        " variable's type is a run-time error."),
     categories=("graph:action", "variables"),
     ui_name="Write Variable",
     inputs=(
@@ -30,6 +32,14 @@ def compute(db):
     if not name:
         db.error("inputs:variableName is empty; name the graph variable to write")
         return
-    db.set_variable(name, db.inputs.value)
-    db.outputs.value = db.inputs.value
+    value = db.inputs.value
+    if value is None:
+        db.error("inputs:value has no value; connect it or set a value")
+        return
+    try:
+        db.set_variable(name, value)
+    except TypeMismatch as error:
+        db.error(f"inputs:value does not fit graph variable {name!r}: {error}")
+        return
+    db.outputs.value = db.get_variable(name)  # as stored (coerced to the variable's type)
     db.outputs.execOut = ExecState.ENABLED

@@ -70,3 +70,29 @@ def test_unknown_variable_is_a_runtime_error_naming_it():
     })
     with pytest.raises(GraphRuntimeError, match="nope"):
         g.run(ticks=1)
+
+
+def _write_graph(value):
+    return GraphHarness({
+        "variables": [{"name": "speed", "type": "double", "default": 0.0}],
+        "nodes": [
+            {"name": "tick", "type": "omni.graph.action.OnTick"},
+            {"name": "write", "type": "omni.graph.core.WriteVariable",
+             "inputs": {"variableName": "speed", **({} if value is None else {"value": value})}},
+        ],
+        "connections": [{"src": "tick.outputs:tick", "dst": "write.inputs:execIn"}],
+    })
+
+
+def test_written_value_is_converted_to_the_variable_type():
+    g = _write_graph(3)
+    g.run(ticks=1)
+    assert g.instance.variables["speed"] == 3.0 and type(g.instance.variables["speed"]) is float
+    assert type(g.output("write", "value")) is float
+
+
+@pytest.mark.parametrize("value, message", [(None, "inputs:value has no value"),
+                                            ("fast", "does not fit graph variable 'speed'")])
+def test_unset_or_mistyped_value_is_a_clear_error(value, message):
+    with pytest.raises(GraphRuntimeError, match=message):
+        _write_graph(value).run(ticks=1)
