@@ -36,6 +36,12 @@ SPEC = NodeSpec(
 )
 
 
+def validate(node_name, values):
+    if values.get("step", 1) == 0:
+        return ["inputs:step must not be 0 (the loop would never end)"]
+    return []
+
+
 def _iterate(db, i):
     step = db.inputs.step
     if step == 0:

@@ -65,7 +65,14 @@ def test_break_loop_ends_after_current_iteration_and_fires_finished():
     assert g.logs[4:] == ["0", "1", "2", "finished"]
 
 
-def test_zero_step_is_a_runtime_error():
-    h = NodeHarness("omni.graph.action.ForLoop", inputs={"stop": 3, "step": 0})
+def test_zero_step_arriving_at_run_time_is_an_error():
+    h = NodeHarness("omni.graph.action.ForLoop", inputs={"stop": 3})
     with pytest.raises(GraphRuntimeError, match="step must not be 0"):
-        h.compute("execIn")
+        h.compute("execIn", step=0)
+
+
+def test_authored_zero_step_is_rejected_at_load():
+    from graphflow.document import GraphError
+
+    with pytest.raises(GraphError, match="inputs:step must not be 0"):
+        NodeHarness("omni.graph.action.ForLoop", inputs={"step": 0})
