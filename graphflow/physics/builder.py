@@ -1,0 +1,437 @@
+"""Build PyBullet bodies, multibodies and constraints from a ``StageDescription``.
+
+Mapping (documented in ``graphflow.physics``):
+
+* every rigid body outside an articulation is a one-link multibody whose base
+  frame is the prim frame; static colliders and kinematic bodies get mass 0;
+* every articulation is one multibody (``createMultiBody`` with link arrays):
+  the body fixed to the world by a fixed joint is the (mass 0) base, a body
+  free in space makes a floating base, a movable joint to the world gets a
+  massless anchor base; each link frame is its joint frame, so USD joint
+  coordinates equal PyBullet's (times -1 when the tree runs body1 -> body0);
+* joints outside articulations become constraints (fixed, prismatic, point to
+  point; revolute as two point-to-point constraints on the axis);
+* D6 joints with ``excludeFromArticulation`` are not built: they are the
+  surface gripper's attachment points, kept as descriptions;
+* friction and restitution are given to PyBullet as square roots: Bullet
+  multiplies the two bodies' coefficients where PhysX averages them, so equal
+  materials combine to the authored value. Bullet has one friction
+  coefficient per link: the static friction of the body's first collider.
+"""
+from __future__ import annotations
+
+import math
+import os
+import warnings
+from dataclasses import dataclass, field
+
+from graphflow.usd.description import Body, Drive, Joint, Shape, StageDescription
+from graphflow.usd.errors import UnsupportedPrimWarning
+from graphflow.usd.physics_import import joint_frame_offset
+from graphflow.usd.transforms import (AXIS_VECTORS, IDENTITY_POSE, Pose, compose, invert, quat_multiply,
+                                      quat_from_axis_angle)
+
+CONE_SEGMENTS = 24                 # a cone collider is the convex hull of this many base points and its apex
+CONSTRAINT_MAX_FORCE = 1.0e9       # joints between free bodies are rigid (see pybullet_notes §4 default quirk)
+REVOLUTE_PIN_HALF_SPAN = 0.05      # m: a free revolute joint is two pins this far either side on its axis
+
+# cylinders and capsules in Bullet run along local Z; USD lets them run along X or Y
+_AXIS_ALIGNMENT = {"X": quat_from_axis_angle((0.0, 1.0, 0.0), math.pi / 2.0),
+                   "Y": quat_from_axis_angle((1.0, 0.0, 0.0), -math.pi / 2.0),
+                   "Z": (0.0, 0.0, 0.0, 1.0)}
+
+
+@dataclass
+class BodyHandle:
+    """Where a USD body lives in PyBullet and how its prim frame relates to the link's inertial frame."""
+
+    path: str
+    body_id: int
+    link: int                       # -1 for a base
+    kind: str                       # dynamic, kinematic, static
+    inertial_in_prim: Pose          # the PyBullet inertial (COM) frame expressed in the prim frame
+    mass: float
+    gravity_enabled: bool
+    articulation: str | None = None
+
+
+@dataclass
+class DriveState:
+    """The live drive of one articulation DOF (targets change at run time; SI units)."""
+
+    stiffness: float
+    damping: float
+    max_force: float
+    target_position: float
+    target_velocity: float
+    acceleration: bool
+
+    @classmethod
+    def from_description(cls, drive: Drive) -> "DriveState":
+        return cls(drive.stiffness, drive.damping, drive.max_force, drive.target_position,
+                   drive.target_velocity, drive.acceleration)
+
+
+@dataclass
+class ArticulationHandle:
+    path: str
+    body_id: int
+    fixed_base: bool
+    joint_paths: tuple[str, ...]          # movable joints in DOF order
+    joint_indices: tuple[int, ...]        # PyBullet joint index of each DOF
+    signs: tuple[float, ...]              # USD coordinate = sign * PyBullet coordinate
+    angular: tuple[bool, ...]
+    drives: list[DriveState | None]
+    efforts: list[float]                  # feed-forward efforts set by nodes (N or N m)
+    members: frozenset[str]               # root, body and joint prim paths
+
+    @property
+    def joint_names(self) -> tuple[str, ...]:
+        return tuple(path.rsplit("/", 1)[-1] for path in self.joint_paths)
+
+
+@dataclass
+class BuiltScene:
+    bodies: dict[str, BodyHandle] = field(default_factory=dict)
+    by_id: dict[tuple[int, int], str] = field(default_factory=dict)
+    articulations: dict[str, ArticulationHandle] = field(default_factory=dict)
+    joint_dofs: dict[str, tuple[str, int]] = field(default_factory=dict)   # joint path -> (articulation, DOF)
+    constraints: dict[str, list[int]] = field(default_factory=dict)        # joint path -> constraint ids
+
+
+class SceneBuilder:
+    """Creates the PyBullet objects of one description in one client; call ``build()`` once per (re)build."""
+
+    def __init__(self, client, description: StageDescription, mesh_directory: str):
+        self.p = client
+        self.description = description
+        self.mesh_directory = mesh_directory
+        self.scene = BuiltScene()
+        self._warned: set[str] = set()
+
+    def build(self) -> BuiltScene:
+        articulated: set[str] = set()
+        for articulation in self.description.articulations:
+            if self._build_articulation(articulation):
+                articulated.update(articulation.bodies)
+                articulated.update(articulation.joints)
+        for path, body in self.description.bodies.items():
+            if path not in articulated:
+                self._build_free_body(body)
+        for path, joint in self.description.joints.items():
+            if path not in articulated:
+                self._build_constraint(joint)
+        return self.scene
+
+    def _unsupported(self, path: str, reason: str):
+        """Warn once per build; the description already lists import-time problems."""
+        if path not in self._warned:
+            self._warned.add(path)
+            if (path, reason) not in self.description.unsupported:
+                self.description.unsupported.append((path, reason))
+                warnings.warn(UnsupportedPrimWarning(f"{self.description.source}: {path}: {reason}"), stacklevel=3)
+
+    # -- collision shapes ----------------------------------------------------------
+    def _collision_shape(self, shapes: list[Shape], frame: Pose = IDENTITY_POSE) -> int:
+        """One PyBullet collision shape (compound if needed) for shapes posed in a body, re-expressed in *frame*."""
+        p = self.p
+        shapes = [s for s in shapes if s.collision_enabled]
+        if not shapes:
+            return -1
+        single = shapes[0] if len(shapes) == 1 else None
+        if single is not None and single.kind in ("plane", "triangle_mesh"):
+            pose = compose(frame, single.pose)
+            if single.kind == "plane":
+                return p.createCollisionShape(p.GEOM_PLANE, planeNormal=AXIS_VECTORS[single.axis],
+                                              collisionFramePosition=pose[0], collisionFrameOrientation=pose[1])
+            return p.createCollisionShape(p.GEOM_MESH, vertices=[list(v) for v in single.points],
+                                          indices=[i for tri in single.triangles for i in tri],
+                                          collisionFramePosition=pose[0], collisionFrameOrientation=pose[1])
+        kinds, radii, half_extents, lengths, files, positions, orientations = [], [], [], [], [], [], []
+        for shape in shapes:
+            if shape.kind in ("plane", "triangle_mesh"):
+                self._unsupported(shape.path, f"a {shape.kind.replace('_', ' ')} collider combined with other shapes")
+                continue
+            pose = compose(frame, shape.pose)
+            kind, radius, extents, length, file_name = p.GEOM_BOX, 0.0, [0.0, 0.0, 0.0], 0.0, ""
+            if shape.kind == "box":
+                extents = list(shape.half_extents)
+            elif shape.kind == "sphere":
+                kind, radius = p.GEOM_SPHERE, shape.radius
+            elif shape.kind in ("capsule", "cylinder"):
+                kind = p.GEOM_CAPSULE if shape.kind == "capsule" else p.GEOM_CYLINDER
+                radius, length = shape.radius, 2.0 * shape.half_height
+                pose = (pose[0], quat_multiply(pose[1], _AXIS_ALIGNMENT[shape.axis]))
+            else:  # cone and convex mesh: a convex hull of points
+                kind, file_name = p.GEOM_MESH, self._hull_file(shape)
+            kinds.append(kind)
+            radii.append(radius)
+            half_extents.append(extents)
+            lengths.append(length)
+            files.append(file_name)
+            positions.append(list(pose[0]))
+            orientations.append(list(pose[1]))
+        if not kinds:
+            return -1
+        return p.createCollisionShapeArray(shapeTypes=kinds, radii=radii, halfExtents=half_extents, lengths=lengths,
+                                           fileNames=files, meshScales=[[1.0, 1.0, 1.0]] * len(kinds),
+                                           collisionFramePositions=positions,
+                                           collisionFrameOrientations=orientations)
+
+    def _hull_file(self, shape: Shape) -> str:
+        """PyBullet's compound shapes take meshes only from files: write the hull points as an OBJ once."""
+        points = shape.points if shape.kind == "convex_mesh" else _cone_points(shape)
+        name = shape.path.strip("/").replace("/", "__") + ".obj"
+        file_path = os.path.join(self.mesh_directory, name)
+        if not os.path.exists(file_path):
+            with open(file_path, "w", encoding="ascii") as obj:
+                obj.writelines(f"v {x!r} {y!r} {z!r}\n" for x, y, z in points)
+                # PyBullet's OBJ reader needs faces; a fan over the points is enough for a convex hull
+                obj.writelines(f"f 1 {i} {i + 1}\n" for i in range(2, len(points)))
+        return file_path
+
+    # -- bodies ----------------------------------------------------------------------
+    def _apply_dynamics(self, body_id: int, link: int, body: Body):
+        p = self.p
+        friction = body.shapes[0].material.static_friction if body.shapes else 0.5
+        restitution = body.shapes[0].material.restitution if body.shapes else 0.0
+        p.changeDynamics(body_id, link, lateralFriction=math.sqrt(max(friction, 0.0)),
+                         restitution=math.sqrt(max(restitution, 0.0)),
+                         linearDamping=body.linear_damping, angularDamping=body.angular_damping)
+        if body.mass is not None and body.kind == "dynamic":
+            p.changeDynamics(body_id, link, localInertiaDiagonal=list(body.mass.diagonal_inertia))
+
+    def _register(self, body: Body, body_id: int, link: int, inertial_in_prim: Pose, articulation: str | None,
+                  mass: float):
+        handle = BodyHandle(path=body.path, body_id=body_id, link=link, kind=body.kind,
+                            inertial_in_prim=inertial_in_prim, mass=mass,
+                            gravity_enabled=body.gravity_enabled, articulation=articulation)
+        self.scene.bodies[body.path] = handle
+        self.scene.by_id[(body_id, link)] = body.path
+
+    def _build_free_body(self, body: Body):
+        p = self.p
+        dynamic = body.kind == "dynamic"
+        inertial = (body.mass.center_of_mass, body.mass.principal_axes) if dynamic else IDENTITY_POSE
+        mass = body.mass.mass if dynamic else 0.0
+        body_id = p.createMultiBody(baseMass=mass, baseCollisionShapeIndex=self._collision_shape(body.shapes),
+                                    basePosition=body.pose[0], baseOrientation=body.pose[1],
+                                    baseInertialFramePosition=inertial[0],
+                                    baseInertialFrameOrientation=inertial[1])
+        self._apply_dynamics(body_id, -1, body)
+        if dynamic:
+            p.resetBaseVelocity(body_id, body.linear_velocity, body.angular_velocity)
+        self._register(body, body_id, -1, inertial, None, mass)
+
+    # -- articulations -------------------------------------------------------------------
+    def _build_articulation(self, articulation) -> bool:
+        p = self.p
+        description = self.description
+        joints = [description.joints[path] for path in sorted(articulation.joints)
+                  if description.joints[path].enabled and description.joints[path].kind in ("fixed", "revolute",
+                                                                                              "prismatic")]
+        for path in articulation.joints:
+            if description.joints[path].kind not in ("fixed", "revolute", "prismatic"):
+                self._unsupported(path, f"a {description.joints[path].kind} joint inside an articulation")
+        members = [b for b in articulation.bodies if b in description.bodies
+                   and description.bodies[b].kind == "dynamic"]
+        if not members:
+            self._unsupported(articulation.path, "an articulation without dynamic bodies")
+            return False
+        world_joints = [j for j in joints if j.body0 is None or j.body1 is None]
+        root_body: str | None = None
+        fixed_base = False
+        anchor_joint: Joint | None = None
+        if world_joints:
+            anchor_joint = world_joints[0]
+            if anchor_joint.kind == "fixed":
+                root_body = anchor_joint.body1 if anchor_joint.body0 is None else anchor_joint.body0
+                fixed_base = True
+            else:
+                fixed_base = True       # a massless anchor base carries the movable joint to the world
+            for extra in world_joints[1:]:
+                self._unsupported(extra.path, "a second joint to the world in one articulation (closed loop)")
+                joints.remove(extra)
+        else:
+            root_body = articulation.path if articulation.path in members else sorted(members)[0]
+
+        # walk the tree from the root: (child body, joint, parent body or None, child is body1)
+        order: list[tuple[str, Joint, str | None, bool]] = []
+        visited = {root_body} if root_body else set()
+        frontier: list[str | None] = [root_body] if root_body else [None]
+        if anchor_joint is not None and root_body is None:
+            child = anchor_joint.body1 if anchor_joint.body0 is None else anchor_joint.body0
+            order.append((child, anchor_joint, None, anchor_joint.body1 == child))
+            visited.add(child)
+            frontier = [child]
+        remaining = [j for j in joints if j is not anchor_joint]
+        while frontier:
+            parent = frontier.pop(0)
+            for joint in list(remaining):
+                if parent not in (joint.body0, joint.body1):
+                    continue
+                child = joint.body1 if joint.body0 == parent else joint.body0
+                remaining.remove(joint)
+                if child in visited or child is None:
+                    self._unsupported(joint.path, "a joint closing a loop in an articulation")
+                    continue
+                visited.add(child)
+                order.append((child, joint, parent, joint.body1 == child))
+                frontier.append(child)
+        for joint in remaining:
+            self._unsupported(joint.path, "a joint not connected to its articulation's root")
+
+        # frames: prim frame of each body expressed in its PyBullet link frame
+        link_from_prim: dict[str | None, Pose] = {root_body: IDENTITY_POSE}
+        link_index: dict[str | None, int] = {root_body: -1}
+        base_pose = description.bodies[root_body].pose if root_body else IDENTITY_POSE
+        arrays = {key: [] for key in ("masses", "shapes", "visuals", "positions", "orientations", "inertial_positions",
+                                      "inertial_orientations", "parents", "types", "axes")}
+        dofs = []
+        for index, (child, joint, parent, child_is_body1) in enumerate(order):
+            child_side, parent_side = (joint.pose1, joint.pose0) if child_is_body1 else (joint.pose0, joint.pose1)
+            link_from_prim[child] = invert(child_side)
+            link_index[child] = index
+            origin = compose(link_from_prim[parent], parent_side) if parent is not None else parent_side
+            body = description.bodies[child]
+            inertial = compose(link_from_prim[child], (body.mass.center_of_mass, body.mass.principal_axes))
+            arrays["masses"].append(body.mass.mass)
+            arrays["shapes"].append(self._collision_shape(body.shapes, link_from_prim[child]))
+            arrays["visuals"].append(-1)
+            arrays["positions"].append(list(origin[0]))
+            arrays["orientations"].append(list(origin[1]))
+            arrays["inertial_positions"].append(list(inertial[0]))
+            arrays["inertial_orientations"].append(list(inertial[1]))
+            arrays["parents"].append(link_index[parent] + 1 if parent is not None else 0)
+            arrays["types"].append({"fixed": p.JOINT_FIXED, "revolute": p.JOINT_REVOLUTE,
+                                    "prismatic": p.JOINT_PRISMATIC}[joint.kind])
+            arrays["axes"].append(list(AXIS_VECTORS[joint.axis]))
+            if joint.kind != "fixed":
+                dofs.append((index, joint, 1.0 if child_is_body1 else -1.0, parent, child))
+
+        if root_body is not None:
+            root = description.bodies[root_body]
+            base_mass = 0.0 if fixed_base else root.mass.mass
+            base_inertial = (root.mass.center_of_mass, root.mass.principal_axes)
+            base_shape = self._collision_shape(root.shapes)
+        else:
+            base_mass, base_inertial, base_shape = 0.0, IDENTITY_POSE, -1
+        flags = p.URDF_USE_SELF_COLLISION | p.URDF_USE_SELF_COLLISION_EXCLUDE_PARENT if articulation.self_collision else 0
+        body_id = p.createMultiBody(
+            baseMass=base_mass, baseCollisionShapeIndex=base_shape, basePosition=base_pose[0],
+            baseOrientation=base_pose[1], baseInertialFramePosition=base_inertial[0],
+            baseInertialFrameOrientation=base_inertial[1],
+            linkMasses=arrays["masses"], linkCollisionShapeIndices=arrays["shapes"],
+            linkVisualShapeIndices=arrays["visuals"], linkPositions=arrays["positions"],
+            linkOrientations=arrays["orientations"], linkInertialFramePositions=arrays["inertial_positions"],
+            linkInertialFrameOrientations=arrays["inertial_orientations"], linkParentIndices=arrays["parents"],
+            linkJointTypes=arrays["types"], linkJointAxis=arrays["axes"], flags=flags)
+
+        if root_body is not None:
+            root = description.bodies[root_body]
+            self._apply_dynamics(body_id, -1, root)
+            self._register(root, body_id, -1, base_inertial, articulation.path, base_mass)
+            if not fixed_base:
+                p.resetBaseVelocity(body_id, root.linear_velocity, root.angular_velocity)
+        for child, _joint, _parent, _is_body1 in order:
+            body = description.bodies[child]
+            index = link_index[child]
+            self._apply_dynamics(body_id, index, body)
+            inertial_in_prim = compose(invert(link_from_prim[child]),
+                                       (tuple(arrays["inertial_positions"][index]),
+                                        tuple(arrays["inertial_orientations"][index])))
+            self._register(body, body_id, index, inertial_in_prim, articulation.path, body.mass.mass)
+
+        drives, efforts = [], []
+        for index, joint, sign, parent, child in dofs:
+            position = joint.initial_position
+            if position is None:
+                pose0 = description.bodies[joint.body0].pose if joint.body0 else IDENTITY_POSE
+                pose1 = description.bodies[joint.body1].pose if joint.body1 else IDENTITY_POSE
+                position = joint_frame_offset(joint, pose0, pose1)
+            p.resetJointState(body_id, index, sign * position, sign * joint.initial_velocity)
+            p.setJointMotorControl2(body_id, index, p.VELOCITY_CONTROL, force=0.0)
+            if math.isfinite(joint.lower) or math.isfinite(joint.upper):
+                low, high = sorted((sign * joint.lower, sign * joint.upper))
+                p.changeDynamics(body_id, index, jointLowerLimit=max(low, -1e10), jointUpperLimit=min(high, 1e10))
+            if joint.max_velocity is not None:
+                p.changeDynamics(body_id, index, maxJointVelocity=joint.max_velocity)
+            drives.append(DriveState.from_description(joint.drive) if joint.drive else None)
+            efforts.append(0.0)
+        handle = ArticulationHandle(
+            path=articulation.path, body_id=body_id, fixed_base=fixed_base,
+            joint_paths=tuple(j.path for _i, j, _s, _p, _c in dofs), joint_indices=tuple(i for i, *_ in dofs),
+            signs=tuple(s for _i, _j, s, _p, _c in dofs), angular=tuple(j.kind == "revolute" for _i, j, *_ in dofs),
+            drives=drives, efforts=efforts,
+            members=frozenset([articulation.path, *visited - {None}, *(j.path for _c, j, _p, _b in order)]))
+        self.scene.articulations[articulation.path] = handle
+        for dof, path in enumerate(handle.joint_paths):
+            self.scene.joint_dofs[path] = (articulation.path, dof)
+        return True
+
+    # -- joints between free bodies -------------------------------------------------------
+    def _constraint_side(self, body_path: str | None, frame: Pose):
+        """(body id, link, frame relative to the link's inertial frame) for one side of a constraint."""
+        if body_path is None:
+            return -1, -1, frame
+        handle = self.scene.bodies[body_path]
+        return handle.body_id, handle.link, compose(invert(handle.inertial_in_prim), frame)
+
+    def _build_constraint(self, joint: Joint):
+        if joint.kind == "d6":
+            if not joint.exclude_from_articulation:
+                self._unsupported(joint.path, "a D6 joint that is not a surface-gripper attachment point")
+            return
+        if not joint.enabled:
+            return
+        if joint.kind in ("revolute", "prismatic") and (joint.drive is not None or math.isfinite(joint.lower)
+                                                         or math.isfinite(joint.upper)):
+            self._unsupported(joint.path, "limits and drives of a joint outside an articulation are not simulated")
+        p = self.p
+        parent_id, parent_link, parent_frame = self._constraint_side(joint.body0, joint.pose0)
+        child_id, child_link, child_frame = self._constraint_side(joint.body1, joint.pose1)
+        if parent_id == -1:   # PyBullet needs a body as parent; swap sides
+            parent_id, parent_link, parent_frame, child_id, child_link, child_frame = (
+                child_id, child_link, child_frame, parent_id, parent_link, parent_frame)
+        ids = []
+        if joint.kind in ("fixed", "prismatic"):
+            kind = p.JOINT_FIXED if joint.kind == "fixed" else p.JOINT_PRISMATIC
+            axis = list(AXIS_VECTORS[joint.axis]) if joint.kind == "prismatic" else [0.0, 0.0, 0.0]
+            ids.append(p.createConstraint(parent_id, parent_link, child_id, child_link, kind, axis,
+                                          parentFramePosition=parent_frame[0], childFramePosition=child_frame[0],
+                                          parentFrameOrientation=parent_frame[1],
+                                          childFrameOrientation=child_frame[1]))
+        else:  # spherical: one pin; revolute: two pins on the axis
+            offsets = [0.0] if joint.kind == "spherical" else [-REVOLUTE_PIN_HALF_SPAN, REVOLUTE_PIN_HALF_SPAN]
+            axis = AXIS_VECTORS[joint.axis]
+            for offset in offsets:
+                pin = ((axis[0] * offset, axis[1] * offset, axis[2] * offset), (0.0, 0.0, 0.0, 1.0))
+                parent_pin, child_pin = compose(parent_frame, pin), compose(child_frame, pin)
+                ids.append(p.createConstraint(parent_id, parent_link, child_id, child_link, p.JOINT_POINT2POINT,
+                                              [0.0, 0.0, 0.0], parentFramePosition=parent_pin[0],
+                                              childFramePosition=child_pin[0]))
+        for constraint in ids:
+            p.changeConstraint(constraint, maxForce=CONSTRAINT_MAX_FORCE)
+        if not joint.collision_enabled and child_id != -1:
+            p.setCollisionFilterPair(parent_id, child_id, parent_link, child_link, 0)
+        self.scene.constraints[joint.path] = ids
+
+
+def _cone_points(shape: Shape):
+    """Apex on +axis at half height, base circle at -half height (USD Cone convention)."""
+    axis = shape.axis
+    points = []
+    for i in range(CONE_SEGMENTS):
+        angle = 2.0 * math.pi * i / CONE_SEGMENTS
+        u, v = shape.radius * math.cos(angle), shape.radius * math.sin(angle)
+        points.append(_along(axis, -shape.half_height, u, v))
+    points.append(_along(axis, shape.half_height, 0.0, 0.0))
+    return points
+
+
+def _along(axis: str, height: float, u: float, v: float):
+    if axis == "X":
+        return (height, u, v)
+    if axis == "Y":
+        return (v, height, u)
+    return (u, v, height)

@@ -1,0 +1,163 @@
+"""What a physics stage describes, as plain Python data (no pxr, no pybullet).
+
+The importer (``graphflow.usd.physics_import``) fills these from a USD stage;
+the PyBullet backend builds its world from them, and rebuilds from the same
+description on reset, which is what makes reset bit-exact.
+
+Units are SI whatever the stage's ``metersPerUnit``: metres, kilograms,
+seconds, radians (USD's degrees are converted), quaternions (x, y, z, w).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from .transforms import IDENTITY_POSE, Pose, Quat, Vec3
+
+SHAPE_KINDS = ("box", "sphere", "capsule", "cylinder", "cone", "plane", "convex_mesh", "triangle_mesh")
+JOINT_KINDS = ("fixed", "revolute", "prismatic", "spherical", "d6")
+
+
+@dataclass(frozen=True)
+class Material:
+    static_friction: float = 0.5      # PhysX defaults
+    dynamic_friction: float = 0.5
+    restitution: float = 0.0
+
+
+@dataclass(frozen=True)
+class Shape:
+    """One collision shape. ``pose`` is relative to its body (world pose for a static collider)."""
+
+    path: str
+    kind: str
+    pose: Pose
+    half_extents: Vec3 = (0.0, 0.0, 0.0)   # box
+    radius: float = 0.0                     # sphere, capsule, cylinder, cone
+    half_height: float = 0.0                # capsule/cylinder (cylinder part), cone
+    axis: str = "Z"                         # capsule, cylinder, cone, plane normal
+    points: tuple[Vec3, ...] = ()           # meshes, already scaled, in the shape frame
+    triangles: tuple[tuple[int, int, int], ...] = ()  # triangle_mesh only
+    material: Material = Material()
+    collision_enabled: bool = True
+
+
+@dataclass(frozen=True)
+class MassProperties:
+    mass: float
+    center_of_mass: Vec3                    # in the body frame
+    diagonal_inertia: Vec3                  # about the principal axes
+    principal_axes: Quat                    # principal axes in the body frame
+
+
+@dataclass
+class Body:
+    """A rigid body (``dynamic`` or ``kinematic``) or a static collider (``static``)."""
+
+    path: str
+    kind: str                               # "dynamic", "kinematic", "static"
+    pose: Pose                              # world pose, scale removed
+    shapes: list[Shape] = field(default_factory=list)
+    mass: MassProperties | None = None      # None for static
+    linear_velocity: Vec3 = (0.0, 0.0, 0.0)   # world frame, m/s
+    angular_velocity: Vec3 = (0.0, 0.0, 0.0)  # world frame, rad/s
+    gravity_enabled: bool = True            # physxRigidBody:disableGravity
+    linear_damping: float = 0.0             # PhysX defaults
+    angular_damping: float = 0.05
+
+
+@dataclass(frozen=True)
+class Drive:
+    """A joint drive: force = k (target - q) + d (target_velocity - v), clamped to max_force.
+
+    ``acceleration`` drives scale the result by the joint's effective inertia,
+    like PhysX. Angular values are per radian.
+    """
+
+    stiffness: float
+    damping: float
+    max_force: float
+    target_position: float
+    target_velocity: float
+    acceleration: bool
+
+
+@dataclass(frozen=True)
+class AxisLimit:
+    low: float
+    high: float
+
+    @property
+    def locked(self) -> bool:
+        """USD convention: low > high means the axis is locked."""
+        return self.low > self.high
+
+
+@dataclass
+class Joint:
+    """A joint between two bodies (``body0``/``body1`` None = the world).
+
+    ``pose0``/``pose1`` are the joint frames in each body's frame (scale removed);
+    when a body is the world, its pose is the joint frame in world.
+    """
+
+    path: str
+    kind: str
+    body0: str | None
+    body1: str | None
+    pose0: Pose = IDENTITY_POSE
+    pose1: Pose = IDENTITY_POSE
+    axis: str = "X"
+    lower: float = float("-inf")            # revolute: rad, prismatic: m
+    upper: float = float("inf")
+    drive: Drive | None = None
+    max_velocity: float | None = None       # rad/s or m/s (physxJoint:maxJointVelocity)
+    initial_position: float | None = None   # state:*:physics:position, converted
+    initial_velocity: float = 0.0
+    collision_enabled: bool = False
+    enabled: bool = True
+    exclude_from_articulation: bool = False
+    # D6 only: per axis (transX..rotZ) limits and drives, rot values in radians
+    limits: dict[str, AxisLimit] = field(default_factory=dict)
+    drives: dict[str, Drive] = field(default_factory=dict)
+    break_force: float = float("inf")
+    break_torque: float = float("inf")
+
+    @property
+    def is_angular(self) -> bool:
+        return self.kind == "revolute"
+
+
+@dataclass
+class Articulation:
+    """An articulation root and the joints and bodies that belong to it."""
+
+    path: str
+    bodies: list[str]
+    joints: list[str]
+    self_collision: bool = False
+
+
+@dataclass(frozen=True)
+class SurfaceGripper:
+    path: str
+    attachment_points: tuple[str, ...]
+
+
+@dataclass
+class StageDescription:
+    source: str                             # file path or "<in-memory stage>"
+    up_axis: str
+    meters_per_unit: float
+    gravity: Vec3
+    time_step: float | None                 # from physxScene:timeStepsPerSecond
+    bodies: dict[str, Body] = field(default_factory=dict)
+    joints: dict[str, Joint] = field(default_factory=dict)
+    articulations: list[Articulation] = field(default_factory=list)
+    surface_grippers: list[SurfaceGripper] = field(default_factory=list)
+    unsupported: list[tuple[str, str]] = field(default_factory=list)   # (path, reason)
+
+    @property
+    def attachment_joints(self) -> dict[str, Joint]:
+        """D6 joints excluded from articulation: the surface gripper's attachment points."""
+        return {path: joint for path, joint in self.joints.items()
+                if joint.kind == "d6" and joint.exclude_from_articulation}

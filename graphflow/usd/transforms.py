@@ -1,0 +1,81 @@
+"""Rigid transforms as plain tuples: positions (x, y, z), quaternions (x, y, z, w).
+
+Shared by the USD importer and the PyBullet backend so both sides agree on one
+convention (graphflow's: xyzw, like PyBullet and OmniGraph attributes; USD's
+Gf quaternions are (real, i, j, k) and are converted at the boundary).
+"""
+from __future__ import annotations
+
+import math
+
+Vec3 = tuple[float, float, float]
+Quat = tuple[float, float, float, float]
+Pose = tuple[Vec3, Quat]
+
+IDENTITY_QUAT: Quat = (0.0, 0.0, 0.0, 1.0)
+IDENTITY_POSE: Pose = ((0.0, 0.0, 0.0), IDENTITY_QUAT)
+AXIS_VECTORS = {"X": (1.0, 0.0, 0.0), "Y": (0.0, 1.0, 0.0), "Z": (0.0, 0.0, 1.0)}
+
+
+def quat_multiply(a: Quat, b: Quat) -> Quat:
+    ax, ay, az, aw = a
+    bx, by, bz, bw = b
+    return (aw * bx + ax * bw + ay * bz - az * by,
+            aw * by - ax * bz + ay * bw + az * bx,
+            aw * bz + ax * by - ay * bx + az * bw,
+            aw * bw - ax * bx - ay * by - az * bz)
+
+
+def quat_conjugate(q: Quat) -> Quat:
+    return (-q[0], -q[1], -q[2], q[3])
+
+
+def quat_normalize(q: Quat) -> Quat:
+    norm = math.sqrt(sum(c * c for c in q))
+    if norm == 0.0:
+        return IDENTITY_QUAT
+    return tuple(c / norm for c in q)  # type: ignore[return-value]
+
+
+def quat_rotate(q: Quat, v: Vec3) -> Vec3:
+    x, y, z, w = q
+    vx, vy, vz = v
+    # t = 2 * cross(q.xyz, v); v' = v + w * t + cross(q.xyz, t)
+    tx, ty, tz = 2.0 * (y * vz - z * vy), 2.0 * (z * vx - x * vz), 2.0 * (x * vy - y * vx)
+    return (vx + w * tx + (y * tz - z * ty),
+            vy + w * ty + (z * tx - x * tz),
+            vz + w * tz + (x * ty - y * tx))
+
+
+def quat_from_axis_angle(axis: Vec3, angle: float) -> Quat:
+    half = 0.5 * angle
+    s = math.sin(half)
+    return (axis[0] * s, axis[1] * s, axis[2] * s, math.cos(half))
+
+
+def compose(a: Pose, b: Pose) -> Pose:
+    """The pose ``a * b``: *b* expressed in the frame *a*."""
+    rotated = quat_rotate(a[1], b[0])
+    return ((a[0][0] + rotated[0], a[0][1] + rotated[1], a[0][2] + rotated[2]),
+            quat_normalize(quat_multiply(a[1], b[1])))
+
+
+def invert(a: Pose) -> Pose:
+    inverse_rotation = quat_conjugate(a[1])
+    p = quat_rotate(inverse_rotation, a[0])
+    return ((-p[0], -p[1], -p[2]), inverse_rotation)
+
+
+def relative(a: Pose, b: Pose) -> Pose:
+    """*b* expressed in the frame *a*: ``inverse(a) * b``."""
+    return compose(invert(a), b)
+
+
+def twist_angle(q: Quat, axis: Vec3) -> float:
+    """The rotation angle of *q* about *axis* (swing-twist decomposition), in radians."""
+    projection = q[0] * axis[0] + q[1] * axis[1] + q[2] * axis[2]
+    return 2.0 * math.atan2(projection, q[3]) if (projection or q[3]) else 0.0
+
+
+def wrap_angle(angle: float) -> float:
+    return math.atan2(math.sin(angle), math.cos(angle))
