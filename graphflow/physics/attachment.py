@@ -1,0 +1,341 @@
+"""The surface gripper's attachment mechanism on PyBullet: raycasts, compliant holds, force readings.
+
+Isaac attaches a gripped object with the attachment point's own D6 joint, whose
+limits and drives make the hold compliant. PyBullet's fixed constraint is
+rigid, so a hold here is a ``JOINT_FIXED`` constraint whose *child frame is
+moved every step* by a compliance model of the D6:
+
+* The joint's zero is the pose at attach time (Isaac attaches at the current
+  relative pose, §2.6); its six coordinates ``x`` (transX..Z along the joint
+  frame axes in metres, rotX..Z as a rotation vector in radians) displace the
+  object from that pose, and the constraint enforces the displaced pose.
+* Each axis is a spring-damper without mass of its own: ``c dx/dt = L - k x``,
+  integrated implicitly, ``x' = (c x + h L) / (c + h k)``, then clamped to the
+  axis limits (a locked axis stays 0). Implicit integration of a first-order
+  system is stable for every ``k, c >= 0`` and any step, and the equilibrium
+  is exactly ``x = L / k``: a held mass sags ``m g / k`` along the axis.
+  With ``k = c = 0`` the axis runs to the limit the load pushes it towards
+  (an axis with neither limit nor drive is held rigid).
+* ``L`` is the load on the object that the joint has to carry, measured, not
+  guessed: the object's own Newton-Euler balance over the last step minus the
+  constraint's wrench (``getConstraintState``) gives gravity, contacts and
+  applied forces; the inertia of following the gripper rigidly is subtracted.
+  Because the constraint wrench that moves the object cancels out of this
+  estimate, moving the frame does not feed back into the load.
+* Several attachment points holding the same object share one model (their
+  springs act in parallel: stiffnesses and dampings add); the axes and limits
+  are those of the first point that attached.
+
+Forces: ``getConstraintState`` rows 0-2 are the force the constraint applies
+to the *parent* (the gripper) in world axes, which is exactly Isaac's
+``PxConstraint::getForce`` convention (force on actor0, world frame); the
+calibration is asserted in ``tests/gripper/test_attachment.py``.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import pybullet
+
+from graphflow.gripper.runtime import RIGID, AxisCompliance
+from graphflow.usd.transforms import AXIS_VECTORS, Pose, compose, invert, quat_rotate, relative
+
+HOLD_MAX_FORCE = 1.0e7          # N (and N·m); far above any break limit so the reading is never clamped
+
+
+@dataclass
+class _Member:
+    constraint: int
+    child_at_attach: Pose         # the joint frame in the object's COM frame when attached
+    parent_frame: Pose            # the joint frame in the gripper link's COM frame
+    compliance: tuple[AxisCompliance, ...]
+
+
+@dataclass
+class _Hold:
+    """Everything holding one object to one gripper link, with its shared compliance state."""
+
+    gripper: tuple[int, int]
+    target: tuple[int, int]
+    reference_child: Pose         # the first member's child frame: the model's axes and origin
+    members: dict[int, _Member] = field(default_factory=dict)
+    offset: list[float] = field(default_factory=lambda: [0.0] * 6)
+    previous: tuple | None = None  # last step's (object v, object w, rigid-follow v, gripper w)
+
+    @property
+    def rigid(self) -> bool:
+        return all(all(axis.rigid for axis in member.compliance) for member in self.members.values())
+
+
+class PyBulletAttachments:
+    """Attachments on one PyBullet client (a ``BulletClient``): attach, detach, comply, read forces."""
+
+    def __init__(self, bullet):
+        self.bullet = bullet
+        self._holds: dict[tuple, _Hold] = {}
+        self._hold_of: dict[int, tuple] = {}
+        self._inertial: dict[tuple[int, int], tuple] = {}
+
+    # -- poses and velocities (PyBullet constraint frames are relative to COM frames) --
+
+    def _dynamics(self, body: int, link: int):
+        key = (body, link)
+        if key not in self._inertial:
+            info = self.bullet.getDynamicsInfo(body, link)
+            self._inertial[key] = (info[0], tuple(info[2]), (tuple(info[3]), tuple(info[4])))
+        return self._inertial[key]
+
+    def com_pose(self, body: int, link: int) -> Pose:
+        if link < 0:
+            position, orientation = self.bullet.getBasePositionAndOrientation(body)
+        else:
+            state = self.bullet.getLinkState(body, link, computeForwardKinematics=1)
+            position, orientation = state[0], state[1]
+        return tuple(position), tuple(orientation)
+
+    def link_frame_pose(self, body: int, link: int) -> Pose:
+        """The pose of the body's own frame (the USD prim frame without scale)."""
+        if link < 0:
+            return compose(self.com_pose(body, link), invert(self._dynamics(body, link)[2]))
+        state = self.bullet.getLinkState(body, link, computeForwardKinematics=1)
+        return tuple(state[4]), tuple(state[5])
+
+    def _com_velocity(self, body: int, link: int):
+        if link < 0:
+            linear, angular = self.bullet.getBaseVelocity(body)
+        else:
+            state = self.bullet.getLinkState(body, link, computeLinkVelocity=1, computeForwardKinematics=1)
+            linear, angular = state[6], state[7]
+        return tuple(linear), tuple(angular)
+
+    def joint_frame(self, body: int, link: int, local_pose: Pose) -> Pose:
+        """World pose of a joint frame given in the body's frame."""
+        return compose(self.link_frame_pose(body, link), local_pose)
+
+    # -- attach / detach --
+
+    def attach(self, gripper: tuple[int, int], joint_local_pose: Pose, target: tuple[int, int],
+               compliance: tuple[AxisCompliance, ...] = RIGID) -> int:
+        """Hold *target* at its current pose relative to the joint frame; returns the constraint id."""
+        frame = self.joint_frame(gripper[0], gripper[1], joint_local_pose)
+        parent_frame = relative(self.com_pose(*gripper), frame)
+        child_frame = relative(self.com_pose(*target), frame)
+        key = (gripper, target)
+        hold = self._holds.get(key)
+        if hold is None:
+            hold = self._holds[key] = _Hold(gripper, target, child_frame)
+            self._collide(gripper, target, False)
+        child_now = self._displaced_child(hold, child_frame)
+        constraint = self.bullet.createConstraint(
+            gripper[0], gripper[1], target[0], target[1], pybullet.JOINT_FIXED, [0, 0, 0],
+            parentFramePosition=parent_frame[0], childFramePosition=child_now[0],
+            parentFrameOrientation=parent_frame[1], childFrameOrientation=child_now[1])
+        self.bullet.changeConstraint(constraint, maxForce=HOLD_MAX_FORCE)
+        hold.members[constraint] = _Member(constraint, child_frame, parent_frame, tuple(compliance))
+        self._hold_of[constraint] = key
+        return constraint
+
+    def detach(self, constraint: int) -> None:
+        key = self._hold_of.pop(constraint, None)
+        if key is None:
+            return
+        self.bullet.removeConstraint(constraint)
+        hold = self._holds[key]
+        del hold.members[constraint]
+        if not hold.members:
+            del self._holds[key]
+            self._collide(hold.gripper, hold.target, True)
+
+    def is_attached(self, constraint: int) -> bool:
+        return constraint in self._hold_of
+
+    def target_of(self, constraint: int) -> tuple[int, int]:
+        return self._holds[self._hold_of[constraint]].target
+
+    def force_on_gripper(self, constraint: int):
+        """The constraint's force on the gripper body, world axes, N (Isaac's getForce convention)."""
+        state = self.bullet.getConstraintState(constraint)
+        return state[0], state[1], state[2]
+
+    def offset(self, constraint: int) -> tuple[float, ...]:
+        """The hold's current joint coordinates (transX..rotZ) relative to the attach pose."""
+        return tuple(self._holds[self._hold_of[constraint]].offset)
+
+    def clear(self) -> None:
+        """Forget every hold without touching PyBullet (after the world rebuilt its bodies)."""
+        self._holds.clear()
+        self._hold_of.clear()
+        self._inertial.clear()
+
+    def _collide(self, gripper, target, enabled: bool) -> None:
+        self.bullet.setCollisionFilterPair(gripper[0], target[0], gripper[1], target[1], int(enabled))
+
+    # -- compliance, run right after every physics step --
+
+    def update(self, dt: float) -> None:
+        """Advance every compliant hold one step (call right after each physics step)."""
+        for hold in self._holds.values():
+            if not hold.rigid:
+                self._advance(hold, dt)
+
+    def _advance(self, hold: _Hold, dt: float) -> None:
+        mass, inertia_diagonal, _ = self._dynamics(*hold.target)
+        target_com = self.com_pose(*hold.target)
+        gripper_com = self.com_pose(*hold.gripper)
+        v_object, w_object = self._com_velocity(*hold.target)
+        v_gripper, w_gripper = self._com_velocity(*hold.gripper)
+        lever = _sub(target_com[0], gripper_com[0])
+        v_rigid = _add(v_gripper, _cross(w_gripper, lever))
+        current = (v_object, w_object, v_rigid, w_gripper)
+        previous, hold.previous = hold.previous, current
+        if previous is None:
+            return
+        relative_linear = _scale(_sub(_sub(v_object, previous[0]), _sub(v_rigid, previous[2])), 1.0 / dt)
+        relative_angular = _scale(_sub(_sub(w_object, previous[1]), _sub(w_gripper, previous[3])), 1.0 / dt)
+
+        # the reference joint frame in world, at the displaced pose the constraint enforces
+        reference = compose(target_com, self._displaced_child(hold, hold.reference_child))
+        force_on_object = [0.0, 0.0, 0.0]
+        torque_on_object = [0.0, 0.0, 0.0]   # about the reference origin
+        for member in hold.members.values():
+            state = self.bullet.getConstraintState(member.constraint)
+            pivot = compose(gripper_com, member.parent_frame)
+            force = (-state[0], -state[1], -state[2])
+            torque = quat_rotate(pivot[1], (-state[3], -state[4], -state[5]))
+            moment = _cross(_sub(pivot[0], reference[0]), force)
+            for i in range(3):
+                force_on_object[i] += force[i]
+                torque_on_object[i] += torque[i] + moment[i]
+        com_lever = _sub(target_com[0], reference[0])
+        inertial_force = _scale(relative_linear, mass)
+        load_force = _sub(inertial_force, force_on_object)
+        angular_inertia = _world_inertia(target_com[1], inertia_diagonal, relative_angular)
+        load_torque = _sub(_add(angular_inertia, _cross(com_lever, inertial_force)), torque_on_object)
+
+        axes = [quat_rotate(reference[1], AXIS_VECTORS[a]) for a in ("X", "Y", "Z")]
+        loads = [_dot(load_force, axis) for axis in axes] + [_dot(load_torque, axis) for axis in axes]
+        first = next(iter(hold.members.values())).compliance
+        for index in range(6):
+            stiffness = sum(m.compliance[index].stiffness for m in hold.members.values())
+            damping = sum(m.compliance[index].damping for m in hold.members.values())
+            hold.offset[index] = _relax(hold.offset[index], loads[index], stiffness, damping, dt,
+                                        first[index])
+        for member in hold.members.values():
+            child = self._displaced_child(hold, member.child_at_attach)
+            self.bullet.changeConstraint(member.constraint, jointChildPivot=child[0],
+                                      jointChildFrameOrientation=child[1], maxForce=HOLD_MAX_FORCE)
+
+    def _displaced_child(self, hold: _Hold, child_at_attach: Pose) -> Pose:
+        """A member's child frame that puts the object at the hold's offset ``D``: ``R D^-1 R^-1 C``."""
+        if not any(hold.offset):
+            return child_at_attach
+        displacement = (tuple(hold.offset[:3]), _quat_from_rotation_vector(hold.offset[3:]))
+        reference = hold.reference_child
+        return compose(compose(compose(reference, invert(displacement)), invert(reference)), child_at_attach)
+
+
+class WorldAttachmentBackend:
+    """The gripper runtime's view of a ``PyBulletWorld``: prim paths in, prim paths out."""
+
+    def __init__(self, world):
+        self.world = world
+        self.mechanism = PyBulletAttachments(world.client)
+        self._gravity_restore: dict[int, str] = {}
+
+    def _body(self, path: str):
+        try:
+            return self.world.body_link(path)
+        except Exception:  # noqa: BLE001 - any lookup failure means "no rigid body there"
+            return None
+
+    def has_body(self, path: str) -> bool:
+        return self._body(path) is not None
+
+    def attachment_frame(self, point) -> Pose | None:
+        body = self._body(point.body0_path)
+        return None if body is None else self.mechanism.joint_frame(body[0], body[1], point.local_pose0)
+
+    def raycast(self, origin, direction, length: float) -> str | None:
+        hit = self.world.raycast(origin, direction, length)
+        return hit.prim_path or None if hit is not None else None
+
+    def attach(self, point, target_path: str):
+        gripper, target = self._body(point.body0_path), self._body(target_path)
+        if gripper is None or target is None:
+            return None
+        return self.mechanism.attach(gripper, point.local_pose0, target, point.compliance or RIGID)
+
+    def detach(self, handle) -> None:
+        self.mechanism.detach(handle)
+        path = self._gravity_restore.pop(handle, None)
+        if path is not None and path not in self._gravity_restore.values():
+            self.world.set_gravity_enabled(path, True)
+
+    def force_on_gripper(self, handle):
+        return self.mechanism.force_on_gripper(handle)
+
+    def set_gravity_compensation(self, handle, enabled: bool) -> None:
+        """Switch gravity off for the held object (restored on detach if the stage had it on)."""
+        path = self.world.prim_at(*self.mechanism.target_of(handle))
+        body = self.world.description.bodies.get(path)
+        if enabled and body is not None and body.gravity_enabled:
+            self.world.set_gravity_enabled(path, False)
+            self._gravity_restore[handle] = path
+
+    def update(self, dt: float) -> None:
+        self.mechanism.update(dt)
+
+    def reset(self) -> None:
+        self.mechanism.clear()
+        self._gravity_restore.clear()
+
+
+def _relax(value: float, load: float, stiffness: float, damping: float, dt: float, axis: AxisCompliance) -> float:
+    """One implicit step of ``c dx/dt = L - k x`` clamped to the axis limits (the attach pose is 0)."""
+    if axis.locked:
+        return 0.0
+    if axis.rigid:
+        return value
+    resistance = damping + dt * stiffness
+    if resistance > 0.0:
+        value = (damping * value + dt * load) / resistance
+    elif load > 0.0:
+        value = axis.upper
+    elif load < 0.0:
+        value = axis.lower
+    return min(max(value, axis.lower), axis.upper)
+
+
+def _quat_from_rotation_vector(vector) -> tuple:
+    angle = math.sqrt(sum(c * c for c in vector))
+    if angle < 1e-12:
+        return 0.0, 0.0, 0.0, 1.0
+    s = math.sin(0.5 * angle) / angle
+    return vector[0] * s, vector[1] * s, vector[2] * s, math.cos(0.5 * angle)
+
+
+def _world_inertia(orientation, diagonal, vector):
+    """``R diag(I) R^T v``: the world-frame inertia tensor of a body times *v*."""
+    local = quat_rotate((-orientation[0], -orientation[1], -orientation[2], orientation[3]), vector)
+    return quat_rotate(orientation, tuple(diagonal[i] * local[i] for i in range(3)))
+
+
+def _add(a, b):
+    return a[0] + b[0], a[1] + b[1], a[2] + b[2]
+
+
+def _sub(a, b):
+    return a[0] - b[0], a[1] - b[1], a[2] - b[2]
+
+
+def _scale(a, s):
+    return a[0] * s, a[1] * s, a[2] * s
+
+
+def _dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def _cross(a, b):
+    return a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]
