@@ -166,6 +166,32 @@ def command_stage(args) -> int:
     return run_stage_command(args.stage, as_json=args.json, simulate_seconds=args.simulate)
 
 
+def command_import(args) -> int:
+    from .document import dumps
+    from .usd.omnigraph import ImportProblem, import_graph
+
+    if args.output and Path(args.output).exists() and not args.force:
+        raise BadInput(f"{args.output}: already exists; not overwriting it (use --force)")
+    try:
+        result = import_graph(args.stage, graph_path=args.graph, output_path=args.output, skip_unknown=args.skip_unknown)
+    except ImportProblem as error:
+        for line in error.problems:
+            print(line, file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except GraphError as error:
+        for problem in error.problems:
+            print(problem, file=sys.stderr)
+        return EXIT_BAD_INPUT
+    for warning in result.warnings:
+        print(f"warning: {warning}", file=sys.stderr)
+    if args.output:
+        save_document(result.document, args.output)
+        print(f"wrote {args.output}: {len(result.document.nodes)} nodes, {len(result.document.connections)} connections from {result.graph_path}")
+    else:
+        sys.stdout.write(dumps(result.document))
+    return EXIT_OK
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="graphflow", description="Run, check and inspect graphflow action graphs.")
     parser.add_argument("--version", action="version", version=f"graphflow {__version__}")
@@ -199,6 +225,15 @@ def build_parser() -> argparse.ArgumentParser:
     stage.add_argument("--simulate", type=_positive_float, metavar="SECONDS",
                        help="step the stage with drives at their targets and report how far bodies moved")
     stage.set_defaults(handler=command_stage)
+
+    convert = commands.add_parser("import", help="convert an Isaac Sim action graph in a USD file to a graph JSON")
+    convert.add_argument("stage", help=".usda / .usd file holding an OmniGraph prim")
+    convert.add_argument("-o", "--output", help="graph JSON to write (default: print to stdout)")
+    convert.add_argument("--graph", help="prim path of the graph when the stage holds several")
+    convert.add_argument("--skip-unknown", action="store_true",
+                         help="drop nodes whose type graphflow does not have (and their connections) instead of failing")
+    convert.add_argument("--force", action="store_true", help="overwrite an existing output file")
+    convert.set_defaults(handler=command_import)
     return parser
 
 

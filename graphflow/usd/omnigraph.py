@@ -1,0 +1,195 @@
+"""Bring Isaac Sim action graphs over: an OmniGraph prim in a USD stage -> a graphflow document.
+
+usd-core composes what Kit left in the file (list-op residue such as
+``delete``/``prepend`` on connections, relative connection and relationship
+paths), so the importer reads composed values only. Node type ids go through
+the registry (legacy ids resolve through aliases); inputs graphflow's node does
+not declare are dropped with a warning; unknown node types are errors unless
+the caller asks to skip them (their connections go too).
+"""
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..document import FORMAT_NAME, FORMAT_VERSION, GraphDocument, parse_document
+from ..registry import Registry, default_registry
+
+GRAPH_TYPE = "OmniGraph"
+NODE_TYPE = "OmniGraphNode"
+UI_POSITION = "ui:nodegraph:node:pos"
+
+
+class ImportProblem(ValueError):
+    """The stage or graph cannot be imported; ``problems`` lists every reason, one line each."""
+
+    def __init__(self, problems: list[str]):
+        self.problems = problems
+        super().__init__("\n".join(problems))
+
+
+@dataclass
+class ImportResult:
+    document: GraphDocument
+    graph_path: str
+    warnings: list[str] = field(default_factory=list)
+
+
+def find_graphs(stage) -> list[str]:
+    """Paths of every OmniGraph prim in the stage, in stage order."""
+    return [str(prim.GetPath()) for prim in stage.Traverse() if prim.GetTypeName() == GRAPH_TYPE]
+
+
+def import_graph(stage_path: str, *, graph_path: str | None = None, output_path: str | None = None,
+                 skip_unknown: bool = False, registry: Registry | None = None) -> ImportResult:
+    """Convert one OmniGraph of a USD file into a validated graphflow document.
+
+    The document's ``settings.stage`` points at the USD file (relative to
+    *output_path*'s folder when given), so the imported graph runs on the stage it came from.
+    """
+    from pxr import Usd
+
+    registry = registry or default_registry()
+    label = str(stage_path)
+    if not Path(stage_path).is_file():
+        raise ImportProblem([f"{label}: file not found"])
+    try:
+        stage = Usd.Stage.Open(str(stage_path))
+    except Exception as error:  # usd-core raises Tf.ErrorException for files that are not USD
+        raise ImportProblem([f"{label}: not a readable USD stage ({str(error).strip().splitlines()[-1]})"]) from None
+    graphs = find_graphs(stage)
+    if graph_path is None:
+        if not graphs:
+            raise ImportProblem([f"{label}: no OmniGraph prim in this stage"])
+        if len(graphs) > 1:
+            raise ImportProblem([f"{label}: several graphs ({', '.join(graphs)}); choose one with --graph"])
+        graph_path = graphs[0]
+    graph_prim = stage.GetPrimAtPath(graph_path)
+    if not graph_prim or graph_prim.GetTypeName() != GRAPH_TYPE:
+        raise ImportProblem([f"{label}: {graph_path} is not an OmniGraph prim (graphs here: {', '.join(graphs) or 'none'})"])
+
+    warnings: list[str] = []
+    evaluator = _value(graph_prim.GetAttribute("evaluator:type"))
+    if evaluator not in (None, "execution"):
+        warnings.append(f"{label}: {graph_path}: evaluator {evaluator!r} imported as an action graph (execution)")
+
+    node_prims = [child for child in graph_prim.GetChildren() if child.GetTypeName() == NODE_TYPE]
+    problems, nodes, kept, ui = [], [], {}, {}
+    for prim in node_prims:
+        name, type_id = prim.GetName(), _value(prim.GetAttribute("node:type"))
+        node_type = registry.get(type_id) if type_id else None
+        if node_type is None:
+            message = f"{label}: node '{name}' ({prim.GetPath()}): unknown node type {type_id!r}"
+            hint = registry.suggest(type_id or "")
+            message += f" (did you mean {hint!r}?)" if hint else ""
+            if skip_unknown:
+                warnings.append(message + "; skipped")
+            else:
+                problems.append(message)
+            continue
+        kept[name] = node_type
+        entry = {"name": name, "type": type_id, "inputs": _authored_inputs(prim, node_type, label, warnings)}
+        version = _value(prim.GetAttribute("node:typeVersion"))
+        if version is not None:
+            entry["typeVersion"] = int(version)
+        if not entry["inputs"]:
+            del entry["inputs"]
+        nodes.append(entry)
+        position = _value(prim.GetAttribute(UI_POSITION))
+        if position is not None:
+            ui[name] = {"pos": [round(float(c), 3) for c in position]}
+    if problems:
+        raise ImportProblem(problems)
+
+    connections = _connections(node_prims, graph_prim.GetPath(), kept, label, warnings)
+    settings = {"evaluator": "execution", "stage": _stage_reference(stage_path, output_path)}
+    data = {"format": FORMAT_NAME, "formatVersion": list(FORMAT_VERSION),
+            "description": f"Imported from {Path(stage_path).name}:{graph_path}",
+            "settings": settings, "nodes": nodes, "connections": connections}
+    if ui:
+        data["ui"] = {"nodes": ui}
+    document = parse_document(data, source=output_path or f"{label}:{graph_path}", registry=registry)
+    return ImportResult(document, graph_path, warnings)
+
+
+def _stage_reference(stage_path: str, output_path: str | None) -> str:
+    base = Path(output_path).resolve().parent if output_path else Path.cwd()
+    return Path(os.path.relpath(Path(stage_path).resolve(), base)).as_posix()
+
+
+def _authored_inputs(prim, node_type, label: str, warnings: list[str]) -> dict:
+    spec = node_type.spec
+    inputs = {}
+    for prop in prim.GetAuthoredProperties():
+        name = prop.GetName()
+        if not name.startswith("inputs:"):
+            continue
+        attribute = spec.attribute(name)
+        if attribute is None:
+            if _has_content(prop):
+                warnings.append(f"{label}: node '{prim.GetName()}' input '{name}': not an input of graphflow's {spec.id}; dropped")
+            continue
+        if attribute.is_execution:
+            continue
+        if hasattr(prop, "GetTargets"):  # a relationship: target inputs hold prim paths
+            targets = [str(path) for path in prop.GetTargets()]
+            if targets:
+                inputs[attribute.name] = targets
+            continue
+        value = _value(prop)
+        if value is not None and not prop.HasAuthoredConnections():
+            inputs[attribute.name] = value
+    return inputs
+
+
+def _has_content(prop) -> bool:
+    if hasattr(prop, "GetTargets"):
+        return bool(prop.GetTargets())
+    return prop.HasAuthoredValue() or prop.HasAuthoredConnections()
+
+
+def _connections(node_prims, graph_path, kept: dict, label: str, warnings: list[str]) -> list[dict]:
+    connections = []
+    for prim in node_prims:
+        if prim.GetName() not in kept:
+            continue
+        for attribute in prim.GetAttributes():
+            name = attribute.GetName()
+            if not name.startswith("inputs:"):
+                continue
+            for source in attribute.GetConnections():
+                source_node = source.GetPrimPath()
+                source_name = source.name
+                where = f"{label}: node '{prim.GetName()}' input '{name}'"
+                if source_node.GetParentPath() != graph_path:
+                    warnings.append(f"{where}: connection from {source} outside the graph; dropped")
+                    continue
+                if source_node.name not in kept:
+                    warnings.append(f"{where}: connection from {source} (no such imported node); dropped")
+                    continue
+                if source_name.startswith("inputs:"):
+                    # Kit lets constants be read from their input; graphflow's constants expose it as an output
+                    source_name = "outputs:" + source_name.split(":", 1)[1]
+                connections.append({"src": f"{source_node.name}.{source_name}", "dst": f"{prim.GetName()}.{name}"})
+    return connections
+
+
+def _value(attribute):
+    """An attribute's composed value as plain JSON-ready Python (None when unset)."""
+    if not attribute or not attribute.HasAuthoredValue():
+        return None
+    return _plain(attribute.Get())
+
+
+def _plain(value):
+    if value is None or isinstance(value, (bool, int, float, str)):
+        return value
+    if hasattr(value, "pathString"):
+        return value.pathString
+    if hasattr(value, "imaginary") and hasattr(value, "real"):  # Gf.Quat*: graphflow stores x, y, z, w
+        return [*(float(c) for c in value.imaginary), float(value.real)]
+    try:
+        return [_plain(item) for item in value]
+    except TypeError:
+        return str(value)
