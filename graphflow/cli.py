@@ -21,6 +21,7 @@ from .executor import GraphRuntimeError, LogEvent
 from .registry import default_registry
 
 EXIT_OK, EXIT_RUNTIME, EXIT_BAD_INPUT = 0, 1, 2
+EXIT_TRACES_DIFFER = 1   # graphflow trace diff, like diff(1)
 PROGRESS_AFTER_SECONDS = 2.0
 
 
@@ -90,14 +91,31 @@ def command_run(args) -> int:
     if args.ticks is None and seconds is None:
         seconds = document.settings.get("duration")
     progress = _Progress(simulation, sys.stdout.isatty())
+    after_tick, closers = [], []   # per-tick hooks (trace, video) and what to close when the run ends
+    try:
+        if args.trace:
+            tracer = _open_trace(args.trace, simulation, args.graph)
+            after_tick.append(tracer.record_tick)
+            closers.append(tracer.stream.close)
+    except BadInput:
+        simulation.close()
+        raise
+
+    def on_tick(count: int, limit: int | None) -> None:
+        for hook in after_tick:
+            hook()
+        progress(count, limit)
+
     started = time.perf_counter()
     try:
-        result = simulation.run(ticks=args.ticks, seconds=seconds, progress=progress)
+        result = simulation.run(ticks=args.ticks, seconds=seconds, progress=on_tick)
     except KeyboardInterrupt:
         progress.finish()
         print("graphflow: interrupted", file=sys.stderr)
         return EXIT_RUNTIME
     finally:
+        for close in closers:
+            close()
         simulation.close()
     progress.finish()
     wall = time.perf_counter() - started
@@ -105,6 +123,31 @@ def command_run(args) -> int:
     logging.getLogger("graphflow").info("%s: %d ticks, %.3f s simulated in %.2f s wall (%s)",
                                         args.graph, result.ticks, result.time, wall, reason)
     return EXIT_OK
+
+
+def _open_trace(path: str, simulation, graph: str):
+    from .trace import TraceRecorder
+
+    try:
+        stream = open(path, "w", encoding="utf-8", newline="\n")
+    except OSError as error:
+        raise BadInput(f"{path}: cannot write the trace: {error.strerror}") from None
+    return TraceRecorder(simulation, stream, graph=graph)
+
+
+def command_trace_diff(args) -> int:
+    from .trace import TraceError, first_difference, read_trace
+
+    try:
+        left, right = read_trace(args.left), read_trace(args.right)
+    except TraceError as error:
+        raise BadInput(str(error)) from None
+    difference = first_difference(left, right)
+    if difference is None:
+        print(f"traces are identical ({len(left.ticks)} ticks)")
+        return EXIT_OK
+    print(difference.describe(args.left, args.right))
+    return EXIT_TRACES_DIFFER
 
 
 def command_validate(args) -> int:
@@ -205,7 +248,16 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--gui", action="store_true", help="open the PyBullet window")
     run.add_argument("--log-level", default="warning", choices=["debug", "info", "warning", "error"],
                      help="Python logging level on stderr (default warning)")
+    run.add_argument("--trace", metavar="FILE", help="write what happens every tick as JSON Lines (docs/trace.md)")
     run.set_defaults(handler=command_run)
+
+    trace = commands.add_parser("trace", help="work with run traces (graphflow run --trace)")
+    trace_commands = trace.add_subparsers(dest="trace_command", required=True, metavar="TRACE_COMMAND")
+    trace_diff = trace_commands.add_parser(
+        "diff", help="print the first tick and field where two traces differ (exit 0 identical, 1 different)")
+    trace_diff.add_argument("left", metavar="A", help="trace file")
+    trace_diff.add_argument("right", metavar="B", help="trace file")
+    trace_diff.set_defaults(handler=command_trace_diff)
 
     validate = commands.add_parser("validate", help="check graph files; print every problem")
     validate.add_argument("graphs", nargs="+", metavar="GRAPH")
