@@ -65,11 +65,12 @@ class DriveState:
     target_position: float
     target_velocity: float
     acceleration: bool
+    max_velocity: float | None = None     # the joint's physxJoint:maxJointVelocity, rad/s or m/s
 
     @classmethod
-    def from_description(cls, drive: Drive) -> "DriveState":
+    def from_description(cls, drive: Drive, max_velocity: float | None) -> "DriveState":
         return cls(drive.stiffness, drive.damping, drive.max_force, drive.target_position,
-                   drive.target_velocity, drive.acceleration)
+                   drive.target_velocity, drive.acceleration, max_velocity)
 
 
 @dataclass
@@ -354,9 +355,7 @@ class SceneBuilder:
             if math.isfinite(joint.lower) or math.isfinite(joint.upper):
                 low, high = sorted((sign * joint.lower, sign * joint.upper))
                 p.changeDynamics(body_id, index, jointLowerLimit=max(low, -1e10), jointUpperLimit=min(high, 1e10))
-            if joint.max_velocity is not None:
-                p.changeDynamics(body_id, index, maxJointVelocity=joint.max_velocity)
-            drives.append(DriveState.from_description(joint.drive) if joint.drive else None)
+            drives.append(DriveState.from_description(joint.drive, joint.max_velocity) if joint.drive else None)
             efforts.append(0.0)
         handle = ArticulationHandle(
             path=articulation.path, body_id=body_id, fixed_base=fixed_base,

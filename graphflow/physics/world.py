@@ -9,6 +9,7 @@ import shutil
 import tempfile
 from typing import Callable, NamedTuple, Sequence
 
+import numpy as np
 import pybullet
 from pybullet_utils.bullet_client import BulletClient
 
@@ -176,41 +177,64 @@ class PyBulletWorld:
             client.applyExternalForce(body_id, link, force, position, pybullet.WORLD_FRAME)
 
     def _drive_efforts(self, articulation: ArticulationHandle, dt: float) -> list[float]:
-        """Joint efforts of the drives: a PD law integrated implicitly ("stable PD").
+        """Joint efforts of the drives: a PD law integrated implicitly (backward Euler).
 
-        force = (k e + d ė - dt k v) / (1 + dt (d + dt k) / m), with m the joint's
-        diagonal joint-space inertia; acceleration drives use m times
-        (k e + d ė - dt k v) / (1 + dt d + dt^2 k). The implicit form keeps stiff
-        drives (large k or d relative to m / dt) stable at 60 Hz, where an explicit
-        spring would blow up; for soft drives it equals the plain PD force.
+        A force drive's effort is f = k (q* - q - dt v') + d (v* - v'), with v' the
+        velocity at the end of the step. With M the joint-space inertia matrix and
+        D = diag(dt d + dt^2 k) this gives (M + D) a = r, r = k (q* - q - dt v) +
+        d (v* - v), and f = M a: stable for any gain at 60 Hz, where an explicit
+        spring (or one using only M's diagonal) blows up on a stiff, coupled arm.
+        Acceleration drives (PhysX semantics: gains per unit of inertia) use the
+        joint's own inertia M_ii: f = M_ii r / (1 + dt d + dt^2 k). Feed-forward
+        efforts are added, then each result is clamped to the drive's max force.
+        A joint's max velocity limits the position error the spring sees to
+        v_max (d + dt k) / k, where the drive's pull and damping balance at v_max (PyBullet's
+        own velocity clamp fights an implicit drive, so it is not used).
         """
-        client = self.client
-        states = client.getJointStates(articulation.body_id, list(articulation.joint_indices))
-        positions = [s[0] for s in states]
-        velocities = [s[1] for s in states]
-        inertia = self._joint_inertia(articulation, positions)
-        efforts = []
+        states = self.client.getJointStates(articulation.body_id, list(articulation.joint_indices))
+        signs = articulation.signs
+        positions = [sign * s[0] for sign, s in zip(signs, states)]
+        velocities = [sign * s[1] for sign, s in zip(signs, states)]
+        count = len(positions)
+        inertia = self._joint_inertia(articulation, [s[0] for s in states])
+        residual = np.zeros(count)
+        implicit = np.zeros(count)
+        force_driven = np.zeros(count, dtype=bool)
+        efforts = np.array(articulation.efforts, dtype=float)
         for dof, drive in enumerate(articulation.drives):
-            sign = articulation.signs[dof]
-            effort = articulation.efforts[dof]
+            if drive is None:
+                continue
+            k, d = drive.stiffness, drive.damping
+            error = drive.target_position - positions[dof]
+            if drive.max_velocity is not None and k > 0 and d > 0:
+                limit = drive.max_velocity * (d + dt * k) / k
+                error = max(-limit, min(limit, error))
+            r = k * (error - dt * velocities[dof]) + d * (drive.target_velocity - velocities[dof])
+            if drive.acceleration:
+                efforts[dof] += inertia[dof, dof] * r / (1.0 + dt * d + dt * dt * k)
+            else:
+                residual[dof] = r
+                implicit[dof] = dt * d + dt * dt * k
+                force_driven[dof] = True
+        if force_driven.any():
+            # signs flip rows and columns of M alike, so M in USD coordinates is S M S
+            sign_vector = np.array(signs)
+            matrix = inertia * np.outer(sign_vector, sign_vector)
+            acceleration = np.linalg.solve(matrix + np.diag(implicit), residual)
+            efforts[force_driven] += (residual - implicit * acceleration)[force_driven]
+        result = []
+        for dof, drive in enumerate(articulation.drives):
+            effort = float(efforts[dof])
             if drive is not None:
-                q, v = sign * positions[dof], sign * velocities[dof]
-                k, d = drive.stiffness, drive.damping
-                numerator = k * (drive.target_position - q) + d * (drive.target_velocity - v) - dt * k * v
-                m = inertia[dof]
-                if drive.acceleration:
-                    effort += m * numerator / (1.0 + dt * d + dt * dt * k)
-                else:
-                    effort += numerator / (1.0 + dt * (d + dt * k) / m)
                 effort = max(-drive.max_force, min(drive.max_force, effort))
-            efforts.append(sign * effort)
-        return efforts
+            result.append(signs[dof] * effort)
+        return result
 
-    def _joint_inertia(self, articulation: ArticulationHandle, positions: list[float]) -> list[float]:
-        """Diagonal of the joint-space inertia matrix (every PyBullet DOF of the multibody is one of ours)."""
-        matrix = self.client.calculateMassMatrix(articulation.body_id, positions)
+    def _joint_inertia(self, articulation: ArticulationHandle, positions: list[float]) -> np.ndarray:
+        """The joint-space inertia matrix of the articulation's DOFs (PyBullet coordinates)."""
+        matrix = np.array(self.client.calculateMassMatrix(articulation.body_id, positions))
         offset = 0 if articulation.fixed_base else 6
-        return [max(matrix[offset + dof][offset + dof], 1e-9) for dof in range(len(positions))]
+        return matrix[offset:offset + len(positions), offset:offset + len(positions)]
 
     # -- backend-internal API (gripper engineer) ------------------------------------------------
     def body_link(self, prim_path: str) -> tuple[int, int]:
