@@ -29,11 +29,19 @@ def plain(value):
 
 
 def is_number(value) -> bool:
+    cls = type(value)
+    if cls is float or cls is int:   # the common case, without the slow ABC check below
+        return True
     return isinstance(value, numbers.Real) and not isinstance(value, bool)
 
 
 def is_boolean(value) -> bool:
     return isinstance(value, (bool, int)) and not isinstance(value, float)
+
+
+# Exact types every value of which ``plain`` leaves unchanged and the keyed ``accept`` accepts:
+# operands of these types take the fast path (a direct ``op`` call), with the same result.
+_TRIVIAL = {is_number: frozenset((int, float)), is_boolean: frozenset((bool, int))}
 
 
 def _rank(value) -> int:
@@ -57,6 +65,13 @@ def elementwise(op, operands, names, accept=is_number, kind="numbers"):
     ``names`` are the input names used in error messages; ``accept`` checks each
     scalar leaf (``kind`` says what was expected).
     """
+    trivial = _TRIVIAL.get(accept)
+    if trivial is not None:
+        for value in operands:
+            if type(value) not in trivial:
+                break
+        else:  # plain scalars only: nothing to convert, check or broadcast
+            return op(*operands)
     values = [plain(v) for v in operands]
 
     def combine(items):
@@ -94,6 +109,18 @@ def require(db, name):
 
 def compute_binary(db, op, output, names=("a", "b"), accept=is_number, kind="numbers"):
     """Shared compute of the two-operand nodes: outputs.<output> = op(a, b) elementwise."""
+    trivial = _TRIVIAL.get(accept)
+    if trivial is not None and len(names) == 2:
+        inputs = db.inputs
+        a, b = getattr(inputs, names[0]), getattr(inputs, names[1])
+        if type(a) in trivial and type(b) in trivial:  # plain scalars: what elementwise would do, minus the checks
+            try:
+                result = op(a, b)
+            except MathError as error:
+                db.error(str(error))
+                return
+            setattr(db.outputs, output, result)
+            return
     try:
         result = elementwise(op, [require(db, n) for n in names], names, accept, kind)
     except MathError as error:
