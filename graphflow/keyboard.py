@@ -13,8 +13,8 @@ simulated time, never reading the wall clock):
 * ``ScriptedKeys`` - a timeline for headless runs and tests
   (``graphflow run --keys FILE`` / ``--key A@1.5``);
 * ``graphflow.physics.keyboard.PyBulletKeys`` - the PyBullet GUI window;
-* nothing attached: a GUI world (one with ``keyboard_events()``) is read
-  through PyBulletKeys, any other world has no keys.
+* nothing attached: a PyBullet world is read through PyBulletKeys (its GUI
+  window; DIRECT clients report no keys), any other world has no keys.
 
 Key names are Kit's ``carb.input.KeyboardInput`` tokens (``A``, ``Key1``,
 ``Up``, ``PageDown``, ``LeftShift``...), as in OmniGraph's ``inputs:keyIn``.
@@ -196,10 +196,11 @@ def attach_keyboard(world, source: KeySource) -> Keyboard:
 
 
 def keyboard_for(world) -> Keyboard:
-    """The keyboard attached to *world*; by default the PyBullet window of a GUI world, else no keys."""
+    """The keyboard attached to *world*; by default a PyBullet world's window, else no keys."""
     keyboard = _keyboards.get(world)
     if keyboard is None:
-        events = getattr(world, "keyboard_events", None)
+        client = getattr(world, "client", None)          # a PyBullet world: read its window (empty in DIRECT)
+        events = getattr(client, "getKeyboardEvents", None)
         if events is not None:
             from graphflow.physics.keyboard import PyBulletKeys
 

@@ -49,7 +49,3 @@ class PyBulletKeys:
                 transitions.append((token, False))
         return transitions
 
-
-def client_keyboard_events(client_id: int) -> Callable[[], dict]:
-    """A reader of one PyBullet client's keyboard events."""
-    return lambda: pybullet.getKeyboardEvents(physicsClientId=client_id)
