@@ -150,6 +150,22 @@ def command_trace_diff(args) -> int:
     return EXIT_TRACES_DIFFER
 
 
+def command_draw(args) -> int:
+    from . import draw
+
+    document = _load(args.graph)
+    try:
+        picture_format = draw.format_for(args.output, args.format)
+    except ValueError as error:
+        raise BadInput(str(error)) from None
+    try:
+        draw.write(draw.layout(document), args.output, picture_format)
+    except OSError as error:
+        raise BadInput(f"{args.output}: cannot write the picture: {error.strerror or error}") from None
+    print(f"wrote {args.output}")
+    return EXIT_OK
+
+
 def command_validate(args) -> int:
     failed = False
     for path in args.graphs:
@@ -286,6 +302,12 @@ def build_parser() -> argparse.ArgumentParser:
                          help="drop nodes whose type graphflow does not have (and their connections) instead of failing")
     convert.add_argument("--force", action="store_true", help="overwrite an existing output file")
     convert.set_defaults(handler=command_import)
+
+    draw = commands.add_parser("draw", help="draw a graph: nodes, exec and data edges, left to right in execution order")
+    draw.add_argument("graph", help="graph JSON file")
+    draw.add_argument("-o", "--output", required=True, metavar="FILE", help="picture file (.svg, .png, .mmd, .dot)")
+    draw.add_argument("--format", choices=["svg", "png", "mermaid", "dot"], help="picture format (default: from the suffix)")
+    draw.set_defaults(handler=command_draw)
     return parser
 
 
