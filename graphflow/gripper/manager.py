@@ -224,7 +224,8 @@ class SurfaceGripperManager:
                 self._read_properties(component)
 
     def _execute_actions(self) -> None:
-        actions, self._actions = self._actions, []
+        actions = list(self._actions)
+        self._actions.clear()
         for action in actions:
             component, index = action[1], action[2]
             if action[0] == "attach":

@@ -219,7 +219,7 @@ class SurfaceGripperComponent:
             hit = self.backend.raycast(origin, direction, length if length > 0 else 0.001)
             if hit is None:
                 return None
-            if hit == point.body0_path:
+            if self.backend.same_body(hit, point.body0_path):
                 clearance += SELF_HIT_STEP
                 continue
             if clearance > 0 and clearance != point.clearance_offset:

@@ -22,14 +22,21 @@ moved every step* by a compliance model of the D6:
   applied forces; the inertia of following the gripper rigidly is subtracted.
   Because the constraint wrench that moves the object cancels out of this
   estimate, moving the frame does not feed back into the load.
-* Several attachment points holding the same object share one model (their
-  springs act in parallel: stiffnesses and dampings add); the axes and limits
-  are those of the first point that attached.
+* Several attachment points holding the same object share one constraint and
+  one model (their springs act in parallel: stiffnesses and dampings add; the
+  axes, origin and limits are those of the first point that attached). Nine
+  rigid constraints on one box would fight each other inside the solver and
+  report arbitrary internal forces of ~0.1 N per point; one constraint does not.
 
 Forces: ``getConstraintState`` rows 0-2 are the force the constraint applies
 to the *parent* (the gripper) in world axes, which is exactly Isaac's
 ``PxConstraint::getForce`` convention (force on actor0, world frame); the
-calibration is asserted in ``tests/gripper/test_attachment.py``.
+calibration is asserted in ``tests/gripper/test_attachment.py``. As in PhysX,
+where a D6 drive is a soft row, the part along a compliant translation axis
+that sits inside its limits is carried by the drive and not reported (Isaac's
+gantry example holds 0.2 kg boxes with a 0.005 N coaxial limit on a soft Z
+drive, which only works that way); at a limit it is reported. Each point of a
+shared hold reports an equal share.
 """
 from __future__ import annotations
 
@@ -45,27 +52,29 @@ HOLD_MAX_FORCE = 1.0e7          # N (and N·m); far above any break limit so the
 
 
 @dataclass
-class _Member:
-    constraint: int
-    child_at_attach: Pose         # the joint frame in the object's COM frame when attached
-    parent_frame: Pose            # the joint frame in the gripper link's COM frame
-    compliance: tuple[AxisCompliance, ...]
-
-
-@dataclass
 class _Hold:
-    """Everything holding one object to one gripper link, with its shared compliance state."""
+    """One object held by one gripper link: a single constraint shared by every attachment point on it."""
 
     gripper: tuple[int, int]
     target: tuple[int, int]
-    reference_child: Pose         # the first member's child frame: the model's axes and origin
-    members: dict[int, _Member] = field(default_factory=dict)
+    constraint: int
+    parent_frame: Pose            # the first point's joint frame in the gripper link's COM frame
+    child_at_attach: Pose         # the same frame in the object's COM frame, when attached
+    members: dict[int, tuple[AxisCompliance, ...]] = field(default_factory=dict)   # handle -> compliance
     offset: list[float] = field(default_factory=lambda: [0.0] * 6)
     previous: tuple | None = None  # last step's (object v, object w, rigid-follow v, gripper w)
+    axes: tuple[AxisCompliance, ...] = ()   # limits of the first point, summed drives of all
 
     @property
     def rigid(self) -> bool:
-        return all(all(axis.rigid for axis in member.compliance) for member in self.members.values())
+        return all(axis.rigid for axis in self.axes)
+
+    def combine(self, first: tuple[AxisCompliance, ...]) -> None:
+        """Parallel springs: stiffness and damping add up; limits stay the first point's."""
+        self.axes = tuple(AxisCompliance(first[i].lower, first[i].upper,
+                                         sum(c[i].stiffness for c in self.members.values()),
+                                         sum(c[i].damping for c in self.members.values()))
+                          for i in range(6))
 
 
 class PyBulletAttachments:
@@ -75,6 +84,7 @@ class PyBulletAttachments:
         self.bullet = bullet
         self._holds: dict[tuple, _Hold] = {}
         self._hold_of: dict[int, tuple] = {}
+        self._next_handle = 0
         self._inertial: dict[tuple[int, int], tuple] = {}
 
     # -- poses and velocities (PyBullet constraint frames are relative to COM frames) --
@@ -83,7 +93,7 @@ class PyBulletAttachments:
         key = (body, link)
         if key not in self._inertial:
             info = self.bullet.getDynamicsInfo(body, link)
-            self._inertial[key] = (info[0], tuple(info[2]), (tuple(info[3]), tuple(info[4])))
+            self._inertial[key] = (info[0], tuple(info[2]))
         return self._inertial[key]
 
     def com_pose(self, body: int, link: int) -> Pose:
@@ -94,13 +104,6 @@ class PyBulletAttachments:
             position, orientation = state[0], state[1]
         return tuple(position), tuple(orientation)
 
-    def link_frame_pose(self, body: int, link: int) -> Pose:
-        """The pose of the body's own frame (the USD prim frame without scale)."""
-        if link < 0:
-            return compose(self.com_pose(body, link), invert(self._dynamics(body, link)[2]))
-        state = self.bullet.getLinkState(body, link, computeForwardKinematics=1)
-        return tuple(state[4]), tuple(state[5])
-
     def _com_velocity(self, body: int, link: int):
         if link < 0:
             linear, angular = self.bullet.getBaseVelocity(body)
@@ -109,58 +112,85 @@ class PyBulletAttachments:
             linear, angular = state[6], state[7]
         return tuple(linear), tuple(angular)
 
-    def joint_frame(self, body: int, link: int, local_pose: Pose) -> Pose:
-        """World pose of a joint frame given in the body's frame."""
-        return compose(self.link_frame_pose(body, link), local_pose)
+    def joint_frame(self, body: int, link: int, joint_in_com: Pose) -> Pose:
+        """World pose of a joint frame given in the link's centre-of-mass frame."""
+        return compose(self.com_pose(body, link), joint_in_com)
 
     # -- attach / detach --
 
-    def attach(self, gripper: tuple[int, int], joint_local_pose: Pose, target: tuple[int, int],
+    def attach(self, gripper: tuple[int, int], joint_in_com: Pose, target: tuple[int, int],
                compliance: tuple[AxisCompliance, ...] = RIGID) -> int:
-        """Hold *target* at its current pose relative to the joint frame; returns the constraint id."""
-        frame = self.joint_frame(gripper[0], gripper[1], joint_local_pose)
-        parent_frame = relative(self.com_pose(*gripper), frame)
-        child_frame = relative(self.com_pose(*target), frame)
+        """Hold *target* at its current pose relative to a joint frame (given in the gripper link's
+        centre-of-mass frame); returns a handle for this attachment point."""
+        self._next_handle += 1
+        handle = self._next_handle
         key = (gripper, target)
         hold = self._holds.get(key)
         if hold is None:
-            hold = self._holds[key] = _Hold(gripper, target, child_frame)
+            frame = self.joint_frame(gripper[0], gripper[1], joint_in_com)
+            child = relative(self.com_pose(*target), frame)
+            constraint = self.bullet.createConstraint(
+                gripper[0], gripper[1], target[0], target[1], pybullet.JOINT_FIXED, [0, 0, 0],
+                parentFramePosition=joint_in_com[0], childFramePosition=child[0],
+                parentFrameOrientation=joint_in_com[1], childFrameOrientation=child[1])
+            self.bullet.changeConstraint(constraint, maxForce=HOLD_MAX_FORCE)
             self._collide(gripper, target, False)
-        child_now = self._displaced_child(hold, child_frame)
-        constraint = self.bullet.createConstraint(
-            gripper[0], gripper[1], target[0], target[1], pybullet.JOINT_FIXED, [0, 0, 0],
-            parentFramePosition=parent_frame[0], childFramePosition=child_now[0],
-            parentFrameOrientation=parent_frame[1], childFrameOrientation=child_now[1])
-        self.bullet.changeConstraint(constraint, maxForce=HOLD_MAX_FORCE)
-        hold.members[constraint] = _Member(constraint, child_frame, parent_frame, tuple(compliance))
-        self._hold_of[constraint] = key
-        return constraint
+            hold = self._holds[key] = _Hold(gripper, target, constraint, joint_in_com, child)
+            first = tuple(compliance)
+        else:
+            first = next(iter(hold.members.values()))
+        hold.members[handle] = tuple(compliance)
+        hold.combine(first)
+        self._hold_of[handle] = key
+        return handle
 
-    def detach(self, constraint: int) -> None:
-        key = self._hold_of.pop(constraint, None)
+    def detach(self, handle: int) -> None:
+        key = self._hold_of.pop(handle, None)
         if key is None:
             return
-        self.bullet.removeConstraint(constraint)
         hold = self._holds[key]
-        del hold.members[constraint]
-        if not hold.members:
-            del self._holds[key]
-            self._collide(hold.gripper, hold.target, True)
+        del hold.members[handle]
+        if hold.members:
+            hold.combine(next(iter(hold.members.values())))
+            return
+        self.bullet.removeConstraint(hold.constraint)
+        del self._holds[key]
+        self._collide(hold.gripper, hold.target, True)
 
-    def is_attached(self, constraint: int) -> bool:
-        return constraint in self._hold_of
+    def is_attached(self, handle: int) -> bool:
+        return handle in self._hold_of
 
-    def target_of(self, constraint: int) -> tuple[int, int]:
-        return self._holds[self._hold_of[constraint]].target
+    def target_of(self, handle: int) -> tuple[int, int]:
+        return self._holds[self._hold_of[handle]].target
 
-    def force_on_gripper(self, constraint: int):
-        """The constraint's force on the gripper body, world axes, N (Isaac's getForce convention)."""
-        state = self.bullet.getConstraintState(constraint)
-        return state[0], state[1], state[2]
+    def force_on_gripper(self, handle: int):
+        """This point's share of the force the hold's rigid parts put on the gripper body, world axes, N.
 
-    def offset(self, constraint: int) -> tuple[float, ...]:
-        """The hold's current joint coordinates (transX..rotZ) relative to the attach pose."""
-        return tuple(self._holds[self._hold_of[constraint]].offset)
+        The constraint's force on its parent is Isaac's ``getForce`` convention
+        (force on actor0, world frame). Along a translation axis that is
+        compliant and inside its limits the load is carried by the D6 drive,
+        not by a rigid row, and is left out (as PhysX reports joint forces);
+        at a limit or on a locked axis it counts. Points holding one object
+        share the result equally.
+        """
+        hold = self._holds[self._hold_of[handle]]
+        state = self.bullet.getConstraintState(hold.constraint)
+        force = [state[0], state[1], state[2]]
+        frame_rotation = None
+        for index in range(3):
+            axis, value = hold.axes[index], hold.offset[index]
+            if not axis.rigid and axis.lower < value < axis.upper:
+                if frame_rotation is None:
+                    frame_rotation = compose(self.com_pose(*hold.gripper), hold.parent_frame)[1]
+                direction = quat_rotate(frame_rotation, AXIS_VECTORS["XYZ"[index]])
+                along = _dot(force, direction)
+                force = [force[i] - along * direction[i] for i in range(3)]
+        share = 1.0 / len(hold.members)
+        return force[0] * share, force[1] * share, force[2] * share
+
+    def offset(self, handle: int) -> tuple[float, ...]:
+        """The hold's joint coordinates (transX..rotZ, m and rad) relative to the attach pose."""
+        return tuple(self._holds[self._hold_of[handle]].offset)
 
     def clear(self) -> None:
         """Forget every hold without touching PyBullet (after the world rebuilt its bodies)."""
@@ -180,7 +210,7 @@ class PyBulletAttachments:
                 self._advance(hold, dt)
 
     def _advance(self, hold: _Hold, dt: float) -> None:
-        mass, inertia_diagonal, _ = self._dynamics(*hold.target)
+        mass, inertia_diagonal = self._dynamics(*hold.target)
         target_com = self.com_pose(*hold.target)
         gripper_com = self.com_pose(*hold.gripper)
         v_object, w_object = self._com_velocity(*hold.target)
@@ -194,45 +224,34 @@ class PyBulletAttachments:
         relative_linear = _scale(_sub(_sub(v_object, previous[0]), _sub(v_rigid, previous[2])), 1.0 / dt)
         relative_angular = _scale(_sub(_sub(w_object, previous[1]), _sub(w_gripper, previous[3])), 1.0 / dt)
 
-        # the reference joint frame in world, at the displaced pose the constraint enforces
-        reference = compose(target_com, self._displaced_child(hold, hold.reference_child))
-        force_on_object = [0.0, 0.0, 0.0]
-        torque_on_object = [0.0, 0.0, 0.0]   # about the reference origin
-        for member in hold.members.values():
-            state = self.bullet.getConstraintState(member.constraint)
-            pivot = compose(gripper_com, member.parent_frame)
-            force = (-state[0], -state[1], -state[2])
-            torque = quat_rotate(pivot[1], (-state[3], -state[4], -state[5]))
-            moment = _cross(_sub(pivot[0], reference[0]), force)
-            for i in range(3):
-                force_on_object[i] += force[i]
-                torque_on_object[i] += torque[i] + moment[i]
-        com_lever = _sub(target_com[0], reference[0])
+        # the joint frame in world, at the displaced pose the constraint enforces
+        child = self._displaced_child(hold)
+        frame = compose(target_com, child)
+        state = self.bullet.getConstraintState(hold.constraint)
+        force_on_object = (-state[0], -state[1], -state[2])
+        pivot_rotation = compose(gripper_com, hold.parent_frame)[1]
+        torque_on_object = quat_rotate(pivot_rotation, (-state[3], -state[4], -state[5]))   # about the pivot
+        com_lever = _sub(target_com[0], frame[0])
         inertial_force = _scale(relative_linear, mass)
         load_force = _sub(inertial_force, force_on_object)
         angular_inertia = _world_inertia(target_com[1], inertia_diagonal, relative_angular)
         load_torque = _sub(_add(angular_inertia, _cross(com_lever, inertial_force)), torque_on_object)
 
-        axes = [quat_rotate(reference[1], AXIS_VECTORS[a]) for a in ("X", "Y", "Z")]
+        axes = [quat_rotate(frame[1], AXIS_VECTORS[a]) for a in ("X", "Y", "Z")]
         loads = [_dot(load_force, axis) for axis in axes] + [_dot(load_torque, axis) for axis in axes]
-        first = next(iter(hold.members.values())).compliance
-        for index in range(6):
-            stiffness = sum(m.compliance[index].stiffness for m in hold.members.values())
-            damping = sum(m.compliance[index].damping for m in hold.members.values())
-            hold.offset[index] = _relax(hold.offset[index], loads[index], stiffness, damping, dt,
-                                        first[index])
-        for member in hold.members.values():
-            child = self._displaced_child(hold, member.child_at_attach)
-            self.bullet.changeConstraint(member.constraint, jointChildPivot=child[0],
-                                      jointChildFrameOrientation=child[1], maxForce=HOLD_MAX_FORCE)
+        for index, axis in enumerate(hold.axes):
+            hold.offset[index] = _relax(hold.offset[index], loads[index], dt, axis)
+        child = self._displaced_child(hold)
+        self.bullet.changeConstraint(hold.constraint, jointChildPivot=child[0],
+                                     jointChildFrameOrientation=child[1], maxForce=HOLD_MAX_FORCE)
 
-    def _displaced_child(self, hold: _Hold, child_at_attach: Pose) -> Pose:
-        """A member's child frame that puts the object at the hold's offset ``D``: ``R D^-1 R^-1 C``."""
+    @staticmethod
+    def _displaced_child(hold: _Hold) -> Pose:
+        """The child frame that puts the object at the hold's offset ``D`` from the attach pose: ``C D^-1``."""
         if not any(hold.offset):
-            return child_at_attach
+            return hold.child_at_attach
         displacement = (tuple(hold.offset[:3]), _quat_from_rotation_vector(hold.offset[3:]))
-        reference = hold.reference_child
-        return compose(compose(compose(reference, invert(displacement)), invert(reference)), child_at_attach)
+        return compose(hold.child_at_attach, invert(displacement))
 
 
 class WorldAttachmentBackend:
@@ -252,9 +271,16 @@ class WorldAttachmentBackend:
     def has_body(self, path: str) -> bool:
         return self._body(path) is not None
 
+    def same_body(self, path_a: str, path_b: str) -> bool:
+        """Whether two prims are simulated as one PyBullet link."""
+        return path_a == path_b or (self._body(path_a) or ()) == (self._body(path_b) or (None,))
+
+    def _joint_in_com(self, point) -> Pose:
+        return relative(self.world.inertial_in_prim(point.body0_path), point.local_pose0)
+
     def attachment_frame(self, point) -> Pose | None:
         body = self._body(point.body0_path)
-        return None if body is None else self.mechanism.joint_frame(body[0], body[1], point.local_pose0)
+        return None if body is None else self.mechanism.joint_frame(body[0], body[1], self._joint_in_com(point))
 
     def raycast(self, origin, direction, length: float) -> str | None:
         hit = self.world.raycast(origin, direction, length)
@@ -264,7 +290,7 @@ class WorldAttachmentBackend:
         gripper, target = self._body(point.body0_path), self._body(target_path)
         if gripper is None or target is None:
             return None
-        return self.mechanism.attach(gripper, point.local_pose0, target, point.compliance or RIGID)
+        return self.mechanism.attach(gripper, self._joint_in_com(point), target, point.compliance or RIGID)
 
     def detach(self, handle) -> None:
         self.mechanism.detach(handle)
@@ -291,15 +317,15 @@ class WorldAttachmentBackend:
         self._gravity_restore.clear()
 
 
-def _relax(value: float, load: float, stiffness: float, damping: float, dt: float, axis: AxisCompliance) -> float:
+def _relax(value: float, load: float, dt: float, axis: AxisCompliance) -> float:
     """One implicit step of ``c dx/dt = L - k x`` clamped to the axis limits (the attach pose is 0)."""
     if axis.locked:
         return 0.0
     if axis.rigid:
         return value
-    resistance = damping + dt * stiffness
+    resistance = axis.damping + dt * axis.stiffness
     if resistance > 0.0:
-        value = (damping * value + dt * load) / resistance
+        value = (axis.damping * value + dt * load) / resistance
     elif load > 0.0:
         value = axis.upper
     elif load < 0.0:
