@@ -166,6 +166,24 @@ def command_draw(args) -> int:
     return EXIT_OK
 
 
+def command_plot(args) -> int:
+    from .plot import write_timeline
+    from .trace import TraceError, read_trace
+
+    try:
+        trace = read_trace(args.trace)
+    except TraceError as error:
+        raise BadInput(str(error)) from None
+    try:
+        drawn = write_timeline(trace, args.output)
+    except (OSError, ValueError) as error:
+        raise BadInput(f"{args.output}: cannot write the plot: {error}") from None
+    for note in drawn.notes:
+        print(f"note: {note}")
+    print(f"wrote {args.output}")
+    return EXIT_OK
+
+
 def command_validate(args) -> int:
     failed = False
     for path in args.graphs:
@@ -308,6 +326,11 @@ def build_parser() -> argparse.ArgumentParser:
     draw.add_argument("-o", "--output", required=True, metavar="FILE", help="picture file (.svg, .png, .mmd, .dot)")
     draw.add_argument("--format", choices=["svg", "png", "mermaid", "dot"], help="picture format (default: from the suffix)")
     draw.set_defaults(handler=command_draw)
+
+    plot = commands.add_parser("plot", help="plot a run trace: controller phase, gripper status, held height, force")
+    plot.add_argument("trace", help="trace file written by graphflow run --trace")
+    plot.add_argument("-o", "--output", required=True, metavar="FILE", help="image file (.png, .svg or .pdf)")
+    plot.set_defaults(handler=command_plot)
     return parser
 
 

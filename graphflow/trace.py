@@ -260,6 +260,8 @@ def read_trace(path: str | Path) -> Trace:
         try:
             record = json.loads(line)
         except json.JSONDecodeError as error:
+            if number == 1:
+                raise TraceError(f"{path}: not a graphflow trace (line 1 is not a JSON header: {error.msg})") from None
             raise TraceError(f"{path}: line {number} is not JSON: {error.msg}") from None
         if not isinstance(record, dict):
             raise TraceError(f"{path}: line {number} is not a JSON object")
