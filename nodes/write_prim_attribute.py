@@ -7,8 +7,8 @@ from .read_prim_attribute import prim_path
 
 SPEC = NodeSpec(
     id="omni.graph.nodes.WritePrimAttribute",
-    version=2,
-    compatible_versions=(1,),
+    version=3,
+    compatible_versions=(1, 2),
     description=(
         "Writes 'value' to the attribute 'name' of a prim when execIn fires, then fires execOut. "
         "Writable: joint drive targets (drive:linear|angular:physics:targetPosition|targetVelocity, "

@@ -45,11 +45,19 @@ def open_stage(stage_or_path):
     try:
         stage = Usd.Stage.Open(str(path))
     except Tf.ErrorException as error:
-        reason = str(error).strip().splitlines()[-1].strip() if str(error).strip() else "unreadable"
-        raise StageError(f"{path}: not a USD stage ({reason})") from None
+        raise StageError(f"{path}: not a USD stage ({_usd_error_reason(error)})") from None
     if stage is None:
         raise StageError(f"{path}: not a USD stage")
     return stage, str(path)
+
+
+def _usd_error_reason(error) -> str:
+    """The first message of a Tf error, without USD's source-file preamble."""
+    text = " ".join(str(error).split())
+    if " : '" in text:
+        text = text.split(" : '", 1)[1]
+        text = text.split("' Error in", 1)[0].rstrip("'")
+    return text or "unreadable"
 
 
 def load_description(stage_or_path) -> StageDescription:
@@ -168,7 +176,7 @@ class _Importer:
 
     def _gravity(self, scenes):
         up = AXIS_VECTORS.get(self.up_axis, AXIS_VECTORS["Z"])
-        default = tuple(-DEFAULT_GRAVITY * c for c in up)
+        default = tuple(-DEFAULT_GRAVITY * c + 0.0 for c in up)
         if not scenes or not scenes[1]:
             return default
         scene = scenes[1][0]
@@ -178,7 +186,7 @@ class _Importer:
             magnitude = DEFAULT_GRAVITY / self.mpu
         if not any(direction):
             direction = tuple(-c for c in up)
-        return tuple(c * magnitude * self.mpu for c in direction)
+        return tuple(c * magnitude * self.mpu + 0.0 for c in direction)
 
     def _time_step(self, scenes):
         if not scenes or not scenes[0]:
