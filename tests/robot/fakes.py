@@ -25,3 +25,49 @@ class FakeArticulationWorld(ClockWorld):
                            velocities and tuple(velocities), efforts and tuple(efforts)))
         for index, value in zip(indices, positions or ()):
             self.positions[articulation_path][index] = value
+
+
+UR10_JOINTS = ("shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint", "wrist_1_joint", "wrist_2_joint",
+               "wrist_3_joint")
+
+
+class FakeGripperManager:
+    """Records gripper commands with the world step they came in; reports what the test says is gripped."""
+
+    def __init__(self, world, grippers):
+        self.world = world
+        self.grippers = set(grippers)
+        self.commands: list[tuple[int, str, str]] = []
+        self.status = {path: "Open" for path in grippers}
+
+    def close_gripper(self, path):
+        if path not in self.grippers:
+            return False
+        self.commands.append((self.world.step_index, "close", path))
+        self.status[path] = "Closed"
+        return True
+
+    def open_gripper(self, path):
+        if path not in self.grippers:
+            return False
+        self.commands.append((self.world.step_index, "open", path))
+        self.status[path] = "Open"
+        return True
+
+
+class FakeUR10World(FakeArticulationWorld):
+    """A UR10 at /World/ur10 (base at *base_position*) whose joints reach their targets at once,
+    a gripper manager, and prims with fixed poses."""
+
+    def __init__(self, base_position=(0.0, 0.0, 0.0), poses=None, time_step: float = 1.0 / 60.0):
+        super().__init__({"/World/ur10": UR10_JOINTS}, time_step)
+        from graphflow.kinematics import UR10_DEFAULT_JOINTS
+
+        self.positions["/World/ur10"] = list(UR10_DEFAULT_JOINTS)
+        self.poses = {"/World/ur10": (tuple(base_position), (0.0, 0.0, 0.0, 1.0)), **(poses or {})}
+        self.surface_grippers = FakeGripperManager(self, ["/World/ur10/ee_link/SurfaceGripper"])
+
+    def prim_pose(self, path):
+        if path not in self.poses:
+            raise WorldError(f"no prim {path}")
+        return self.poses[path]

@@ -1,0 +1,140 @@
+"""The pick-and-place phase machine and the UR10 arm driver shared by PickPlaceController and
+StackingController. Not a node type (the leading underscore keeps the registry away).
+
+Phases, heights and xy interpolation are Isaac Sim's PickPlaceController
+(reference §5.1): ``t`` grows by ``events_dt[event]`` on every call (every
+tick), the phase ends when ``t >= 1``; heights and xy blend with
+``mix(t) = (1 - cos(pi t)) / 2``. Targets are for the suction tip.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from graphflow.kinematics import SUCTION_DOWN, matrix_to_quaternion, quaternion_to_matrix, ur10_chain
+
+UR10_EVENTS_DT = (0.01, 0.0035, 0.01, 1.0, 0.008, 0.005, 0.005, 1.0, 0.01, 0.08)
+PHASE_COUNT = 10
+DONE = PHASE_COUNT
+# Isaac's phase 9 "moves towards the old xy" with alpha 1, i.e. holds above the place: named for what it does
+EVENT_NAMES = ("move_above_pick", "descend", "settle", "gripper_close", "lift", "move_to_place",
+               "descend_to_place", "gripper_open", "lift_after_place", "hold_above_place", "done")
+CLOSE_EVENT, OPEN_EVENT, SETTLE_EVENT = 3, 7, 2
+DEFAULT_INITIAL_HEIGHT = 0.3
+
+
+def mix(t: float) -> float:
+    return 0.5 * (1.0 - math.cos(math.pi * t))
+
+
+def tip_height(event: int, t: float, h0: float, h1: float, place_z: float) -> float:
+    """Height of the tool target in each moving phase (Isaac's _get_target_hs)."""
+    a = mix(max(0.0, t))
+    return {0: h1, 1: (1 - a) * h1 + a * h0, 3: h0, 4: (1 - a) * h0 + a * h1, 5: h1,
+            6: (1 - a) * h1 + a * place_z, 7: place_z, 8: (1 - a) * place_z + a * h1, 9: h1}[event]
+
+
+def tip_xy(event: int, t: float, pick_xy, place_xy) -> tuple[float, float]:
+    """xy of the tool target: at the pick until phase 5 blends to the place (Isaac's _get_alpha)."""
+    alpha = 0.0 if event < 5 else (mix(t) if event == 5 else 1.0)
+    return ((1 - alpha) * pick_xy[0] + alpha * place_xy[0], (1 - alpha) * pick_xy[1] + alpha * place_xy[1])
+
+
+def advance(event: int, t: float, events_dt) -> tuple[int, float]:
+    """One call's worth of progress: t += dt of the phase; the next phase starts at t = 0 once t >= 1."""
+    t += events_dt[event]
+    if t >= 1.0:
+        return event + 1, 0.0
+    return event, t
+
+
+def events_dt_problems(values) -> list[str]:
+    """Load-time check of an authored eventsDT (Isaac raises unless there are exactly 10 values)."""
+    if values is None:
+        return []
+    if not isinstance(values, (list, tuple)) or len(values) != PHASE_COUNT:
+        count = len(values) if isinstance(values, (list, tuple)) else "no"
+        return [f"inputs:eventsDT needs exactly {PHASE_COUNT} phase increments, got {count}"]
+    bad = [v for v in values if not isinstance(v, (int, float)) or isinstance(v, bool) or not v > 0]
+    if bad:
+        return [f"inputs:eventsDT values must be positive (each phase must end), got {bad[0]!r}"]
+    return []
+
+
+class PickPlaceRun:
+    """One pick and place: the phase machine, with the pick xy and height latched in phases 0 and 1."""
+
+    def __init__(self, events_dt, initial_height: float):
+        self.events_dt = tuple(events_dt)
+        self.h1 = initial_height
+        self.event = 0
+        self.t = 0.0
+        self.pick = (0.0, 0.0, 0.0)
+
+    @property
+    def done(self) -> bool:
+        return self.event >= PHASE_COUNT
+
+    def step(self, picking, placing, offset):
+        """This call's action, then advance: ("move", tip xyz) | ("hold", None) | ("close"/"open", None)."""
+        event = self.event
+        if event == SETTLE_EVENT:
+            action = ("hold", None)
+        elif event == CLOSE_EVENT:
+            action = ("close", None)
+        elif event == OPEN_EVENT:
+            action = ("open", None)
+        else:
+            if event in (0, 1):
+                self.pick = tuple(picking)
+            x, y = tip_xy(event, self.t, self.pick, placing)
+            z = tip_height(event, self.t, self.pick[2], self.h1, placing[2])
+            action = ("move", (x + offset[0], y + offset[1], z + offset[2]))
+        self.event, self.t = advance(event, self.t, self.events_dt)
+        return action
+
+
+class UR10Arm:
+    """Turns world-frame suction-tip targets into UR10 joint position targets, through the world.
+
+    IK runs on a numpy copy of the arm (graphflow.kinematics), warm-started
+    from the previous solution, so it never touches the simulated state.
+    """
+
+    def __init__(self, world, robot_path: str):
+        self.world = world
+        self.robot_path = robot_path
+        self.chain = ur10_chain()
+        names = world.joint_names(robot_path)
+        missing = [name for name in self.chain.names if name not in names]
+        if missing:
+            raise ValueError(f"{robot_path} is not a UR10: no joint {', '.join(missing)}")
+        self.indices = [names.index(name) for name in self.chain.names]
+        position, orientation = world.prim_pose(robot_path)
+        self.base_position = np.asarray(position, dtype=float)
+        self.base_rotation = quaternion_to_matrix(orientation)
+        current = world.joint_positions(robot_path)
+        self.solution = tuple(current[i] for i in self.indices)
+
+    def move_tip(self, tip, orientation=SUCTION_DOWN) -> tuple[float, ...]:
+        """Solve IK for the tip (world frame) and send the joint targets; returns them."""
+        local = self.base_rotation.T @ (np.asarray(tip, dtype=float) - self.base_position)
+        rotation = self.base_rotation.T @ quaternion_to_matrix(orientation)
+        solution = self.chain.inverse(local, matrix_to_quaternion(rotation), self.solution)
+        if not solution.converged:
+            raise ValueError(f"cannot reach tool target {tuple(round(c, 4) for c in tip)}: "
+                             f"IK left {solution.position_error * 1000:.1f} mm")
+        self.solution = solution.positions
+        self.world.set_joint_targets(self.robot_path, self.indices, positions=self.solution)
+        return self.solution
+
+
+def gripper_manager(world):
+    """The world's surface-gripper manager (``world.surface_grippers`` once created)."""
+    existing = getattr(world, "surface_grippers", None)
+    if existing is not None:
+        return existing
+    from graphflow.gripper.manager import manager_for
+
+    return manager_for(world)
