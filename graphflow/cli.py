@@ -83,6 +83,8 @@ def command_run(args) -> int:
         numpy.random.seed(args.seed)
     except ImportError:
         pass
+    if args.record:
+        _check_recording(args, document)
     try:
         simulation = Simulation(document, gui=args.gui, on_log=_print_log_event)
     except (ValueError, OSError) as error:
@@ -97,6 +99,10 @@ def command_run(args) -> int:
             tracer = _open_trace(args.trace, simulation, args.graph)
             after_tick.append(tracer.record_tick)
             closers.append(tracer.stream.close)
+        if args.record:
+            video = _start_recording(args, simulation.world)
+            after_tick.append(video.capture)
+            closers.append(video.close)
     except BadInput:
         simulation.close()
         raise
@@ -123,6 +129,47 @@ def command_run(args) -> int:
     logging.getLogger("graphflow").info("%s: %d ticks, %.3f s simulated in %.2f s wall (%s)",
                                         args.graph, result.ticks, result.time, wall, reason)
     return EXIT_OK
+
+
+def _check_recording(args, document) -> None:
+    """Refuse a recording that cannot be made before the run starts, not after it ends."""
+    if document.settings.get("stage") is None:
+        raise BadInput(f"{args.graph}: --record needs a graph with a stage (settings.stage); this one has no scene")
+    from .physics.recorder import RecordingError, check_encoder
+
+    try:
+        check_encoder(args.record)
+    except RecordingError as error:
+        raise BadInput(str(error)) from None
+
+
+def _start_recording(args, world):
+    from .physics.recorder import Camera, RecordingError, VideoRecorder
+
+    camera = Camera(args.camera_target, args.camera_distance, args.camera_yaw, args.camera_pitch)
+    try:
+        return VideoRecorder(world, args.record, fps=args.fps, size=args.size, camera=camera)
+    except RecordingError as error:
+        raise BadInput(str(error)) from None
+    except OSError as error:
+        raise BadInput(f"{args.record}: cannot write the video: {error.strerror or error}") from None
+
+
+def _size(text: str) -> tuple[int, int]:
+    width, _, height = text.lower().partition("x")
+    if not (width.isdigit() and height.isdigit()) or int(width) < 16 or int(height) < 16:
+        raise argparse.ArgumentTypeError(f"expected WIDTHxHEIGHT in pixels, at least 16x16, got {text}")
+    return int(width), int(height)
+
+
+def _point(text: str) -> tuple[float, float, float]:
+    try:
+        values = tuple(float(v) for v in text.split(","))
+    except ValueError:
+        values = ()
+    if len(values) != 3:
+        raise argparse.ArgumentTypeError(f"expected X,Y,Z in metres, got {text}")
+    return values
 
 
 def _open_trace(path: str, simulation, graph: str):
@@ -283,6 +330,13 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--log-level", default="warning", choices=["debug", "info", "warning", "error"],
                      help="Python logging level on stderr (default warning)")
     run.add_argument("--trace", metavar="FILE", help="write what happens every tick as JSON Lines (docs/trace.md)")
+    run.add_argument("--record", metavar="FILE", help="record a video: .gif, .mp4 (needs ffmpeg) or a folder of PNG frames")
+    run.add_argument("--fps", type=_positive_float, default=15.0, help="video frames per simulated second (default 15)")
+    run.add_argument("--size", type=_size, default=(480, 360), metavar="WxH", help="video size in pixels (default 480x360)")
+    run.add_argument("--camera-target", type=_point, metavar="X,Y,Z", help="point the camera looks at (default: the scene's centre)")
+    run.add_argument("--camera-distance", type=_positive_float, metavar="M", help="camera distance (default: fit the scene)")
+    run.add_argument("--camera-yaw", type=float, default=50.0, metavar="DEG", help="camera yaw in degrees (default 50)")
+    run.add_argument("--camera-pitch", type=float, default=-30.0, metavar="DEG", help="camera pitch in degrees (default -30)")
     run.set_defaults(handler=command_run)
 
     trace = commands.add_parser("trace", help="work with run traces (graphflow run --trace)")
