@@ -9,13 +9,15 @@ moved every step* by a compliance model of the D6:
   relative pose, §2.6); its six coordinates ``x`` (transX..Z along the joint
   frame axes in metres, rotX..Z as a rotation vector in radians) displace the
   object from that pose, and the constraint enforces the displaced pose.
-* Each axis is a spring-damper without mass of its own: ``c dx/dt = L - k x``,
-  integrated implicitly, ``x' = (c x + h L) / (c + h k)``, then clamped to the
-  axis limits (a locked axis stays 0). Implicit integration of a first-order
-  system is stable for every ``k, c >= 0`` and any step, and the equilibrium
-  is exactly ``x = L / k``: a held mass sags ``m g / k`` along the axis.
-  With ``k = c = 0`` the axis runs to the limit the load pushes it towards
-  (an axis with neither limit nor drive is held rigid).
+* Each axis is the held object on the D6's spring-damper: ``m x'' = L - k x - c x'``
+  (``m`` the object's mass, or for a rotation its inertia about that axis
+  through the joint origin), integrated with implicit Euler,
+  ``v' = (m v + h (L - k x)) / (m + h c + h^2 k)``, ``x' = x + h v'``, and
+  stopped at the axis limits (a locked axis stays 0). Implicit Euler is stable
+  for every ``k, c >= 0`` at any step and its equilibrium is exactly
+  ``x = L / k``: a held mass sags ``m g / k`` along the axis. With ``k = c = 0``
+  the object moves freely between the limits (an axis with neither limit nor
+  drive is held rigid instead of letting the object slide away).
 * ``L`` is the load on the object that the joint has to carry, measured, not
   guessed: the object's own Newton-Euler balance over the last step minus the
   constraint's wrench (``getConstraintState``) gives gravity, contacts and
@@ -62,6 +64,7 @@ class _Hold:
     child_at_attach: Pose         # the same frame in the object's COM frame, when attached
     members: dict[int, tuple[AxisCompliance, ...]] = field(default_factory=dict)   # handle -> compliance
     offset: list[float] = field(default_factory=lambda: [0.0] * 6)
+    rate: list[float] = field(default_factory=lambda: [0.0] * 6)
     previous: tuple | None = None  # last step's (object v, object w, rigid-follow v, gripper w)
     axes: tuple[AxisCompliance, ...] = ()   # limits of the first point, summed drives of all
 
@@ -239,8 +242,11 @@ class PyBulletAttachments:
 
         axes = [quat_rotate(frame[1], AXIS_VECTORS[a]) for a in ("X", "Y", "Z")]
         loads = [_dot(load_force, axis) for axis in axes] + [_dot(load_torque, axis) for axis in axes]
+        inertias = [mass] * 3 + [_dot(axis, _world_inertia(target_com[1], inertia_diagonal, axis))
+                                 + mass * _dot(_cross(axis, com_lever), _cross(axis, com_lever)) for axis in axes]
         for index, axis in enumerate(hold.axes):
-            hold.offset[index] = _relax(hold.offset[index], loads[index], dt, axis)
+            hold.offset[index], hold.rate[index] = _integrate(
+                hold.offset[index], hold.rate[index], loads[index], inertias[index], dt, axis)
         child = self._displaced_child(hold)
         self.bullet.changeConstraint(hold.constraint, jointChildPivot=child[0],
                                      jointChildFrameOrientation=child[1], maxForce=HOLD_MAX_FORCE)
@@ -317,20 +323,26 @@ class WorldAttachmentBackend:
         self._gravity_restore.clear()
 
 
-def _relax(value: float, load: float, dt: float, axis: AxisCompliance) -> float:
-    """One implicit step of ``c dx/dt = L - k x`` clamped to the axis limits (the attach pose is 0)."""
+def _integrate(value: float, rate: float, load: float, inertia: float, dt: float, axis: AxisCompliance):
+    """One implicit-Euler step of ``m x'' = L - k x - c x'`` for one axis, stopped at its limits.
+
+    ``v' = (m v + h (L - k x)) / (m + h c + h^2 k)``, ``x' = x + h v'``: stable for
+    every ``k, c >= 0`` and step ``h``, with the equilibrium ``x = L / k``.
+    """
     if axis.locked:
-        return 0.0
+        return 0.0, 0.0
     if axis.rigid:
-        return value
-    resistance = axis.damping + dt * axis.stiffness
-    if resistance > 0.0:
-        value = (axis.damping * value + dt * load) / resistance
-    elif load > 0.0:
-        value = axis.upper
-    elif load < 0.0:
-        value = axis.lower
-    return min(max(value, axis.lower), axis.upper)
+        return value, 0.0
+    denominator = inertia + dt * axis.damping + dt * dt * axis.stiffness
+    if denominator <= 0.0:
+        return value, 0.0
+    rate = (inertia * rate + dt * (load - axis.stiffness * value)) / denominator
+    value += dt * rate
+    if value >= axis.upper:
+        value, rate = axis.upper, min(rate, 0.0)
+    elif value <= axis.lower:
+        value, rate = axis.lower, max(rate, 0.0)
+    return value, rate
 
 
 def _quat_from_rotation_vector(vector) -> tuple:
