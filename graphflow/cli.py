@@ -45,6 +45,9 @@ class _Progress:
         self.started = time.perf_counter()
         self.last_shown = 0.0
         self.shown = False
+        # the first node with an eventName output (a controller) names the current phase
+        self.phase_node = next((node.name for node in simulation.compiled.nodes
+                                if node.spec.attribute("outputs:eventName") is not None), None)
 
     def __call__(self, count: int, limit: int | None) -> None:
         if not self.enabled or count % 32:
@@ -54,11 +57,17 @@ class _Progress:
         if elapsed < PROGRESS_AFTER_SECONDS or now - self.last_shown < 0.25:
             return
         self.last_shown = now
-        total = f"/{limit}" if limit else ""
-        rate = count / elapsed
-        sys.stderr.write(f"\r  t = {self.simulation.world.time:8.3f} s   tick {count}{total}   {rate:7.0f} ticks/s ")
+        sys.stderr.write("\r" + self.status(count, limit, elapsed))
         sys.stderr.flush()
         self.shown = True
+
+    def status(self, count: int, limit: int | None, elapsed: float) -> str:
+        """The status line: simulated time, tick, ticks per wall second and the controller's phase if any."""
+        total = f"/{limit}" if limit else ""
+        line = f"  t = {self.simulation.world.time:8.3f} s   tick {count}{total}   {count / elapsed:7.0f} ticks/s "
+        if self.phase_node is not None:
+            line += f"  phase {self.simulation.instance.output(self.phase_node, 'eventName') or '-':<20}"
+        return line
 
     def finish(self) -> None:
         if self.shown:
