@@ -25,7 +25,7 @@ import os
 import warnings
 from dataclasses import dataclass, field
 
-from graphflow.usd.description import Body, Drive, Joint, Shape, StageDescription
+from graphflow.usd.description import Body, Joint, Shape, StageDescription
 from graphflow.usd.errors import UnsupportedPrimWarning
 from graphflow.usd.physics_import import joint_frame_offset
 from graphflow.usd.transforms import (AXIS_VECTORS, IDENTITY_POSE, Pose, compose, invert, quat_multiply,
@@ -33,7 +33,7 @@ from graphflow.usd.transforms import (AXIS_VECTORS, IDENTITY_POSE, Pose, compose
 
 CONE_SEGMENTS = 24                 # a cone collider is the convex hull of this many base points and its apex
 CONSTRAINT_MAX_FORCE = 1.0e9       # joints between free bodies are rigid (see pybullet_notes §4 default quirk)
-REVOLUTE_PIN_HALF_SPAN = 0.05      # m: a free revolute joint is two pins this far either side on its axis
+REVOLUTE_PIN_HALF_SPAN = 0.25      # m: a free revolute joint is two pins this far either side on its axis
 
 # cylinders and capsules in Bullet run along local Z; USD lets them run along X or Y
 _AXIS_ALIGNMENT = {"X": quat_from_axis_angle((0.0, 1.0, 0.0), math.pi / 2.0),
@@ -66,11 +66,14 @@ class DriveState:
     target_velocity: float
     acceleration: bool
     max_velocity: float | None = None     # the joint's physxJoint:maxJointVelocity, rad/s or m/s
+    lower: float = float("-inf")          # the joint's limits: targets beyond them are not pursued
+    upper: float = float("inf")
 
     @classmethod
-    def from_description(cls, drive: Drive, max_velocity: float | None) -> "DriveState":
+    def for_joint(cls, joint: Joint) -> "DriveState":
+        drive = joint.drive
         return cls(drive.stiffness, drive.damping, drive.max_force, drive.target_position,
-                   drive.target_velocity, drive.acceleration, max_velocity)
+                   drive.target_velocity, drive.acceleration, joint.max_velocity, joint.lower, joint.upper)
 
 
 @dataclass
@@ -355,7 +358,7 @@ class SceneBuilder:
             if math.isfinite(joint.lower) or math.isfinite(joint.upper):
                 low, high = sorted((sign * joint.lower, sign * joint.upper))
                 p.changeDynamics(body_id, index, jointLowerLimit=max(low, -1e10), jointUpperLimit=min(high, 1e10))
-            drives.append(DriveState.from_description(joint.drive, joint.max_velocity) if joint.drive else None)
+            drives.append(DriveState.for_joint(joint) if joint.drive else None)
             efforts.append(0.0)
         handle = ArticulationHandle(
             path=articulation.path, body_id=body_id, fixed_base=fixed_base,

@@ -187,6 +187,8 @@ class PyBulletWorld:
         Acceleration drives (PhysX semantics: gains per unit of inertia) use the
         joint's own inertia M_ii: f = M_ii r / (1 + dt d + dt^2 k). Feed-forward
         efforts are added, then each result is clamped to the drive's max force.
+        Targets beyond the joint's limits are pursued only up to the limit, so a
+        stiff drive does not push the joint through PyBullet's (soft) limit.
         A joint's max velocity limits the position error the spring sees to
         v_max (d + dt k) / k, where the drive's pull and damping balance at v_max (PyBullet's
         own velocity clamp fights an implicit drive, so it is not used).
@@ -205,7 +207,7 @@ class PyBulletWorld:
             if drive is None:
                 continue
             k, d = drive.stiffness, drive.damping
-            error = drive.target_position - positions[dof]
+            error = min(max(drive.target_position, drive.lower), drive.upper) - positions[dof]
             if drive.max_velocity is not None and k > 0 and d > 0:
                 limit = drive.max_velocity * (d + dt * k) / k
                 error = max(-limit, min(limit, error))
