@@ -17,6 +17,8 @@ from pathlib import Path
 from .trace import Trace
 
 GRIPPER_STATES = ("Open", "Closing", "Closed")
+PHASE_TITLE = "controller phase"
+NO_PHASE = "(none)"             # a controller's phase name before its first phase
 FIGURE_WIDTH = 10.0            # inches
 PANEL_HEIGHT = 1.6             # inches per value panel
 ACTIVITY_ROW_HEIGHT = 0.2      # inches per node in the exec-pulse panel
@@ -53,12 +55,12 @@ def timeline(trace: Trace) -> Timeline:
     end_time = trace.ticks[-1]["t"] if trace.ticks else 0.0
     panels, notes = [], []
 
-    phase = Panel("controller phase", "phase", "category")
+    phase = Panel(PHASE_TITLE, "phase", "category")
     for key in trace.header.get("phases", []):
-        times, values = [0.0], [trace.header.get("outputs", {}).get(key, "")]
+        times, values = [0.0], [trace.header.get("outputs", {}).get(key) or NO_PHASE]
         for t, value in trace.series(key):
             times.append(t)
-            values.append(value)
+            values.append(value or NO_PHASE)
         phase.series[key] = (times, values)
         phase.categories += [v for v in values if v not in phase.categories]
     if phase.series:
@@ -117,7 +119,11 @@ def timeline_figure(data: Timeline, title: str):
     if data.panels:
         axes_list = fig.subplots(len(data.panels), 1, sharex=True, squeeze=False,
                                  gridspec_kw={"height_ratios": heights})[:, 0]
+        phase_changes = [t for panel in data.panels if panel.kind == "category" and panel.title == PHASE_TITLE
+                         for times, _ in panel.series.values() for t in times[1:]]
         for axes, panel in zip(axes_list, data.panels):
+            for t in phase_changes:      # phase boundaries across every panel, to line events up
+                axes.axvline(t, color="#9ca3af", linewidth=0.6, linestyle=":", zorder=0)
             _draw_panel(axes, panel, data.end_time)
         axes_list[-1].set_xlabel("simulated time (s)")
         axes_list[-1].set_xlim(0.0, max(data.end_time, 1e-9))
