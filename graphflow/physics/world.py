@@ -310,8 +310,8 @@ class PyBulletWorld:
         from pxr import Gf, UsdGeom
 
         prim = self.stage.GetPrimAtPath(prim_path)
-        if not prim or not prim.IsA(UsdGeom.Xformable):
-            raise WorldError(f"{prim_path} is not a prim with a pose on this stage")
+        if not prim:
+            raise WorldError(f"no prim {prim_path} on this stage")
         transform = Gf.Transform(UsdGeom.XformCache().GetLocalToWorldTransform(prim))
         scale = self.description.meters_per_unit
         imaginary = transform.GetRotation().GetQuat().GetImaginary()

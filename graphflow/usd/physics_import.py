@@ -172,7 +172,23 @@ class _Importer:
                 for path in paths:
                     self._unsupported(str(path), f"{_enum_name(kind)} is not simulated")
         self._surface_grippers()
-        return self.description
+        return self._in_path_order(self.description)
+
+    @staticmethod
+    def _in_path_order(description: StageDescription) -> StageDescription:
+        """USD's parser works in parallel and returns prims in varying order; the world is built in
+        this order, and PyBullet's results depend on creation order, so sort everything by path."""
+        description.bodies = dict(sorted(description.bodies.items()))
+        for body in description.bodies.values():
+            body.shapes.sort(key=lambda shape: shape.path)
+        description.joints = dict(sorted(description.joints.items()))
+        description.articulations.sort(key=lambda articulation: articulation.path)
+        for articulation in description.articulations:
+            articulation.bodies.sort()
+            articulation.joints.sort()
+        description.surface_grippers.sort(key=lambda gripper: gripper.path)
+        description.unsupported.sort()
+        return description
 
     def _gravity(self, scenes):
         up = AXIS_VECTORS.get(self.up_axis, AXIS_VECTORS["Z"])
@@ -306,11 +322,18 @@ class _Importer:
         mass, diagonal, center, axes = UsdPhysics.RigidBodyAPI(prim).ComputeMassProperties(mass_information)
         mass = float(mass)
         diagonal = tuple(float(c) * self.mpu ** 2 for c in diagonal)
+        principal_axes = _quat(axes)
+        mass_api = UsdPhysics.MassAPI(prim)
+        if prim.HasAPI(UsdPhysics.MassAPI) and mass_api.GetDiagonalInertiaAttr().HasAuthoredValue():
+            # usd-core leaves the axes uninitialised when only the diagonal is authored: identity, as PhysX
+            authored = mass_api.GetPrincipalAxesAttr().Get() if mass_api.GetPrincipalAxesAttr().HasAuthoredValue() else None
+            has_axes = authored is not None and (authored.GetReal() != 0 or any(authored.GetImaginary()))
+            principal_axes = _quat(authored) if has_axes else (0.0, 0.0, 0.0, 1.0)
         if mass <= 0.0:
             self._unsupported(str(prim.GetPath()), "a rigid body without mass or colliders (given 1 kg)")
             mass, diagonal = 1.0, (1e-3, 1e-3, 1e-3)
         return MassProperties(mass=mass, center_of_mass=self._vec(center), diagonal_inertia=diagonal,
-                              principal_axes=_quat(axes))
+                              principal_axes=principal_axes)
 
     # -- joints --------------------------------------------------------------------
     def _joint_body(self, joint_path: str, which: str, body_path, relationship_target, local_pose: Pose):
