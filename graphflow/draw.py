@@ -9,7 +9,7 @@ Every format names every node and edge, so a picture can be checked by text.
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from xml.sax.saxutils import escape, quoteattr
 
@@ -31,6 +31,8 @@ COLUMN_GAP = 90
 ROW_GAP = 26
 MARGIN = 24
 LEGEND_HEIGHT = 28
+LANE_GAP = 12             # px between the lanes that long edges run along
+LANE_BEND = 36            # px an edge takes to curve into or out of its lane
 VALUE_CHARS = 28          # authored values longer than this are shortened with an ellipsis
 
 EXEC_COLOUR = "#2d2d2d"
@@ -81,11 +83,23 @@ class Edge:
     def label(self) -> str:
         return f"{self.src.split(':', 1)[1]} → {self.dst.split(':', 1)[1]}"
 
-    def controls(self) -> tuple[tuple[float, float], tuple[float, float]]:
-        """Cubic Bézier control points: leave rightwards, arrive from the left (loops back when needed)."""
+    lane: float | None = None    # y of the free lane an edge that would cross boxes runs along
+
+    def segments(self) -> list[tuple]:
+        """The route after ``start``: ("C", control1, control2, end) cubic Béziers and ("L", end) lines.
+
+        A direct edge is one S-curve leaving rightwards and arriving from the
+        left (looping back when it points left); a laned edge curves into its
+        lane, runs along it and curves down or up into its input.
+        """
         (x1, y1), (x2, y2) = self.start, self.end
-        reach = max(50.0, abs(x2 - x1) * 0.45)
-        return (x1 + reach, y1), (x2 - reach, y2)
+        if self.lane is None:
+            reach = max(50.0, abs(x2 - x1) * 0.45)
+            return [("C", (x1 + reach, y1), (x2 - reach, y2), self.end)]
+        lane = self.lane
+        return [("C", (x1 + 0.6 * LANE_BEND, y1), (x1 + 0.4 * LANE_BEND, lane), (x1 + LANE_BEND, lane)),
+                ("L", (x2 - LANE_BEND, lane)),
+                ("C", (x2 - 0.4 * LANE_BEND, lane), (x2 - 0.6 * LANE_BEND, y2), self.end)]
 
 
 @dataclass(frozen=True)
@@ -231,16 +245,38 @@ def layout(document: GraphDocument, registry: Registry | None = None) -> Picture
         x += column_width[c] + COLUMN_GAP
     total_height = data_top + data_band - MARGIN if data_band else exec_band
 
+    # edges that would run behind boxes of the columns they skip take a lane: exec above, data below
+    blocked = {"exec": [], "data": []}
+    for connection in document.connections:
+        source, target = boxes[connection.src_node], boxes[connection.dst_node]
+        y1 = source.port("outputs", connection.src_attr.split(":", 1)[1]).y
+        in_port = target.port("inputs", connection.dst_attr.split(":", 1)[1])
+        low, high = min(y1, in_port.y) - ROW_HEIGHT / 2, max(y1, in_port.y) + ROW_HEIGHT / 2
+        if any(source.layer < box.layer < target.layer and box.y < high and box.y + box.height > low
+               for box in boxes.values()):
+            blocked[in_port.kind].append(connection)
+    top_lanes = len(blocked["exec"]) * LANE_GAP
+    bottom = MARGIN + top_lanes + total_height + LANE_GAP / 2
+    lanes = {c: MARGIN + i * LANE_GAP for i, c in enumerate(blocked["exec"])}
+    lanes.update({c: bottom + (i + 0.5) * LANE_GAP for i, c in enumerate(blocked["data"])})
+    boxes = {name: _shifted(box, top_lanes) for name, box in boxes.items()}
     edges = []
     for connection in document.connections:
         source, target = boxes[connection.src_node], boxes[connection.dst_node]
         out_port = source.port("outputs", connection.src_attr.split(":", 1)[1])
         in_port = target.port("inputs", connection.dst_attr.split(":", 1)[1])
         edges.append(Edge(connection.src, connection.dst, "exec" if in_port.kind == "exec" else "data",
-                          (source.x + source.width, out_port.y), (target.x, in_port.y)))
+                          (source.x + source.width, out_port.y), (target.x, in_port.y), lanes.get(connection)))
     title = Path(document.source).stem if document.source != "<graph>" else "graph"
-    return Picture(title, tuple(boxes[n.name] for n in document.nodes), tuple(edges),
-                   x - COLUMN_GAP + MARGIN, total_height + 2 * MARGIN + LEGEND_HEIGHT)
+    height = total_height + top_lanes + len(blocked["data"]) * LANE_GAP + 2 * MARGIN + LEGEND_HEIGHT
+    return Picture(title, tuple(boxes[n.name] for n in document.nodes), tuple(edges), x - COLUMN_GAP + MARGIN, height)
+
+
+def _shifted(box: Box, down: float) -> Box:
+    if not down:
+        return box
+    return replace(box, y=box.y + down, inputs=tuple(replace(p, y=p.y + down) for p in box.inputs),
+                   outputs=tuple(replace(p, y=p.y + down) for p in box.outputs))
 
 
 def _box(name: str, spec, layer: int, x: float, y: float, width: float, height: float,
@@ -290,12 +326,10 @@ def to_svg(picture: Picture) -> str:
            '<rect width="100%" height="100%" fill="white"/>',
            '<g class="edges" fill="none">']
     for edge in picture.edges:
-        (c1x, c1y), (c2x, c2y) = edge.controls()
         style = (f'stroke="{EXEC_COLOUR}" stroke-width="2.2" marker-end="url(#exec-arrow)"' if edge.kind == "exec" else
                  f'stroke="{DATA_COLOUR}" stroke-width="1.4" stroke-dasharray="5 3" marker-end="url(#data-dot)"')
         out.append(f'<path class="edge {edge.kind}" data-src={quoteattr(edge.src)} data-dst={quoteattr(edge.dst)} '
-                   f'd="M{_n(edge.start[0])},{_n(edge.start[1])} C{_n(c1x)},{_n(c1y)} {_n(c2x)},{_n(c2y)} '
-                   f'{_n(edge.end[0])},{_n(edge.end[1])}" {style}><title>{escape(edge.src)} → {escape(edge.dst)}</title></path>')
+                   f'd="{_svg_route(edge)}" {style}><title>{escape(edge.src)} → {escape(edge.dst)}</title></path>')
     out.append("</g>")
     out.append('<g class="nodes">')
     fills = {"event": EVENT_FILL, "exec": EXEC_FILL, "pure": PURE_FILL}
@@ -329,6 +363,13 @@ def to_svg(picture: Picture) -> str:
                f'marker-end="url(#data-dot)"/><text x="162" y="4">data</text></g>')
     out.append("</svg>")
     return "\n".join(out) + "\n"
+
+
+def _svg_route(edge: Edge) -> str:
+    parts = [f"M{_n(edge.start[0])},{_n(edge.start[1])}"]
+    for kind, *points in edge.segments():
+        parts.append(kind + " ".join(f"{_n(x)},{_n(y)}" for x, y in points))
+    return " ".join(parts)
 
 
 def _svg_port(edge_x: float, port: Port, anchor: str, text_x: float) -> str:
@@ -409,8 +450,11 @@ def figure(picture: Picture):
     axes.axis("off")
     points_per_px = 72 / 100
     for edge in picture.edges:
-        c1, c2 = edge.controls()
-        path = CurvePath([edge.start, c1, c2, edge.end], [CurvePath.MOVETO] + [CurvePath.CURVE4] * 3)
+        vertices, codes = [edge.start], [CurvePath.MOVETO]
+        for kind, *points in edge.segments():
+            vertices += points
+            codes += [CurvePath.CURVE4] * 3 if kind == "C" else [CurvePath.LINETO]
+        path = CurvePath(vertices, codes)
         exec_edge = edge.kind == "exec"
         axes.add_patch(PathPatch(path, fill=False, edgecolor=EXEC_COLOUR if exec_edge else DATA_COLOUR,
                                  linewidth=(2.2 if exec_edge else 1.4) * points_per_px,
