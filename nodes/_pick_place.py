@@ -1,5 +1,6 @@
-"""The pick-and-place phase machine and the UR10 arm driver shared by PickPlaceController and
-StackingController. Not a node type (the leading underscore keeps the registry away).
+"""The pick-and-place phase machine, the UR10 arm driver and the exec handling shared by
+PickPlaceController and StackingController. Not a node type (the leading underscore keeps the
+registry away).
 
 Phases, heights and xy interpolation are Isaac Sim's PickPlaceController
 (reference §5.1): ``t`` grows by ``events_dt[event]`` on every call (every
@@ -13,6 +14,8 @@ import math
 import numpy as np
 
 from graphflow.kinematics import SUCTION_DOWN, matrix_to_quaternion, quaternion_to_matrix, ur10_chain
+from graphflow.spec import Attribute
+from graphflow.types import ExecState
 
 UR10_EVENTS_DT = (0.01, 0.0035, 0.01, 1.0, 0.008, 0.005, 0.005, 1.0, 0.01, 0.08)
 PHASE_COUNT = 10
@@ -138,3 +141,108 @@ def gripper_manager(world):
     from graphflow.gripper.manager import manager_for
 
     return manager_for(world)
+
+
+# -- ports and exec handling common to both controllers ------------------------------------------
+
+COMMON_INPUTS = (
+    Attribute("execIn", "execution", description="Starts the routine (and ticks it)"),
+    Attribute("reset", "execution", description="Back to the start"),
+    Attribute("pause", "execution", description="Stop advancing; the arm holds its targets"),
+    Attribute("resume", "execution", description="Continue after a pause"),
+    Attribute("robotPrim", "target", description="The UR10 articulation root"),
+    Attribute("gripperPrim", "target", description="The IsaacSurfaceGripper prim on the UR10"),
+)
+MOTION_INPUTS = (
+    Attribute("endEffectorOffset", "double[3]", default=(0.0, 0.0, 0.02), description="Added to every tip target (m)"),
+    Attribute("endEffectorOrientation", "quatd[4]", default=SUCTION_DOWN,
+              description="Tip orientation (x, y, z, w), world; default: suction axis down"),
+    Attribute("eventsDT", "double[]", default=UR10_EVENTS_DT, description="Per-tick phase increments, exactly 10 values"),
+    Attribute("endEffectorInitialHeight", "double", default=DEFAULT_INITIAL_HEIGHT,
+              description="Travel height h1 of the tip (m)"),
+)
+COMMON_OUTPUTS = (
+    Attribute("execOut", "execution", description="Fires on every tick the controller advanced"),
+    Attribute("phaseStarted", "execution", description="Fires when a phase begins (and once at done)"),
+    Attribute("finished", "execution", description="Latent: pushed on start, finishes when done"),
+    Attribute("event", "int", description="Current phase 0..9; 10 when done"),
+    Attribute("eventName", "token", allowed_tokens=EVENT_NAMES, description="Name of the current phase"),
+    Attribute("isDone", "bool", description="True once the routine is complete"),
+    Attribute("jointTargets", "double[]", description="UR10 joint position targets last sent (rad)"),
+)
+COMMON_STATE = (
+    Attribute("running", "bool", default=False, description="Started and not yet finished"),
+    Attribute("paused", "bool", default=False, description="Paused by the pause input"),
+    Attribute("lastFrame", "int", default=-1, description="Tick of the last advance"),
+)
+
+
+def run_controller(db, make_routine):
+    """Exec semantics of both controllers; *make_routine(db)* builds the phase plan on first use and on reset.
+
+    A routine has ``done``, ``marker`` (a tuple ending in the phase about to run) and ``step(db)``
+    returning the phase machine's action. One advance per tick, whoever computes the node first.
+    """
+    routine = db.internal.get("routine")
+    if routine is None or db.inputs.reset == ExecState.ENABLED:
+        routine = db.internal["routine"] = make_routine(db)
+        db.internal["reported"] = None
+        db.state.paused = False
+    if db.inputs.pause == ExecState.ENABLED:
+        db.state.paused = True
+    if db.inputs.resume == ExecState.ENABLED:
+        db.state.paused = False
+    if db.inputs.execIn == ExecState.ENABLED and not db.state.running and not routine.done:
+        db.state.running = True
+        db.outputs.finished = ExecState.LATENT_PUSH
+    if db.state.running and not db.state.paused and db.frame != db.state.lastFrame:
+        db.state.lastFrame = db.frame
+        _advance(db, routine)
+    reported = db.internal["reported"] or routine.marker
+    db.outputs.event = reported[-1]
+    db.outputs.eventName = EVENT_NAMES[reported[-1]]
+    db.outputs.isDone = reported[-1] == DONE
+    return reported
+
+
+def _advance(db, routine):
+    db.outputs.execOut = ExecState.ENABLED
+    if routine.marker != db.internal["reported"]:
+        db.internal["reported"] = routine.marker
+        db.outputs.phaseStarted = ExecState.ENABLED
+    if routine.done:
+        db.state.running = False
+        db.outputs.finished = ExecState.LATENT_FINISH
+        return
+    if not db.inputs.robotPrim:
+        db.error("inputs:robotPrim: no robot given")
+    if not db.inputs.gripperPrim:
+        db.error("inputs:gripperPrim: no surface gripper given")
+    robot, gripper = db.inputs.robotPrim[0], db.inputs.gripperPrim[0]
+    arm = db.internal.get("arm")
+    if arm is None or arm.robot_path != robot:
+        try:
+            arm = db.internal["arm"] = UR10Arm(db.world, robot)
+        except ValueError as error:
+            db.error(f"inputs:robotPrim: {error}")
+    kind, tip = routine.step(db)
+    if kind == "move":
+        try:
+            arm.move_tip(tip, db.inputs.endEffectorOrientation)
+        except ValueError as error:
+            db.error(str(error))
+    elif kind in ("close", "open"):
+        manager = gripper_manager(db.world)
+        commanded = manager.close_gripper(gripper) if kind == "close" else manager.open_gripper(gripper)
+        if not commanded:
+            db.error(f"inputs:gripperPrim: no surface gripper at {gripper}")
+    db.outputs.jointTargets = arm.solution
+
+
+def new_run(db) -> PickPlaceRun:
+    """A phase machine from the node's eventsDT and travel height (checked again here: they may be connected)."""
+    events_dt = db.inputs.eventsDT
+    problems = events_dt_problems(list(events_dt))
+    if problems:
+        db.error(problems[0])
+    return PickPlaceRun(events_dt, db.inputs.endEffectorInitialHeight)

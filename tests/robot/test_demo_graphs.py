@@ -47,3 +47,21 @@ def test_ur10_pick_place_places_the_cube_and_stops_by_itself():
         assert logs[5] == "phase 5 move_to_place: gripper Closed"     # carried the whole way
         assert logs[8] == "phase 8 lift_after_place: gripper Open"
         assert logs[-1] == "pick and place done"
+
+
+@pytest.mark.slow
+def test_ur10_stacking_centres_the_top_cube_on_the_bottom_one():
+    simulation, result = _run("ur10_stacking.json")
+    with simulation:
+        world = simulation.world
+        bottom, _ = world.prim_pose("/World/Cube_0")
+        top, _ = world.prim_pose("/World/Cube_1")
+        assert result.stopped_by_graph
+        assert math.dist(top[:2], bottom[:2]) < 0.01
+        assert top[2] - bottom[2] == pytest.approx(0.05, abs=0.002)
+        assert math.dist(bottom, (0.4, 0.4, 0.025)) < 0.01
+        assert _at_rest(world, "/World/Cube_0") and _at_rest(world, "/World/Cube_1")
+        logs = [event.message for event in simulation.instance.events]
+        assert logs[3] == "cube 0 phase 3 gripper_close: gripper Closed"
+        assert logs[13] == "cube 1 phase 3 gripper_close: gripper Closed"
+        assert logs[-2:] == ["cube 2 phase 10 done: gripper Open", "stacking done"]
