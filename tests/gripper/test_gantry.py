@@ -1,8 +1,9 @@
-"""Isaac Sim's surface-gripper tests (reference §7.1) in Isaac's own gantry stage.
+"""Isaac Sim's surface-gripper tests (reference §7.1) in Isaac's gantry stage and in graphflow's own.
 
-Setup as ``test_surface_gripper.py``: grippers created programmatically on the
-nine cone joints, ``GripperView`` values maxGripDistance 0.02, coaxial 0.005 N,
-shear 5 N, retry 1.0 s; 60 Hz physics; write-to-USD off.
+Setup as ``test_surface_gripper.py``: in Isaac's stage the grippers are created
+programmatically on the nine cone joints; graphflow's ``asset:gantry.usda``
+already has ``/World/SurfaceGripper``. ``GripperView`` values maxGripDistance
+0.02, coaxial 0.005 N, shear 5 N, retry 1.0 s; 60 Hz physics; write-to-USD off.
 """
 import pytest
 
@@ -15,18 +16,17 @@ CUBE_28 = "/World/Boxes/Cube_28"
 VIEW_PROPERTIES = dict(max_grip_distance=0.02, coaxial_force_limit=0.005, shear_force_limit=5.0, retry_interval=1.0)
 
 
-def _gantry(second_gripper_over=None):
-    stage = isaac_gantry_stage(second_gripper_over)
-    world = create_world(stage)
+def _gantry(second_gripper_over=None, scene="isaac"):
+    world = create_world(isaac_gantry_stage(second_gripper_over) if scene == "isaac" else "asset:gantry.usda")
     manager = manager_for(world)
     paths = [GRIPPER] if second_gripper_over is None else [GRIPPER, SECOND_GRIPPER]
     manager.set_gripper_properties(paths, **VIEW_PROPERTIES)
     return world, manager, GantryDriver(world, manager)
 
 
-@pytest.fixture
-def gantry():
-    world, manager, driver = _gantry()
+@pytest.fixture(params=["isaac", "graphflow"])
+def gantry(request):
+    world, manager, driver = _gantry(scene=request.param)
     yield driver
     world.close()
 
