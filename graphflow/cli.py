@@ -18,6 +18,7 @@ from pathlib import Path
 from . import __version__
 from .document import GraphError, load_document, parse_document, save_document
 from .executor import GraphRuntimeError, LogEvent
+from .keyboard import KeySpecError, attach_keyboard, scripted_keys
 from .registry import default_registry
 
 EXIT_OK, EXIT_RUNTIME, EXIT_BAD_INPUT = 0, 1, 2
@@ -95,9 +96,15 @@ def command_run(args) -> int:
     if args.record:
         _check_recording(args, document)
     try:
+        keys = scripted_keys(args.keys, args.key)
+    except KeySpecError as error:
+        raise BadInput(str(error)) from None
+    try:
         simulation = Simulation(document, gui=args.gui, on_log=_print_log_event)
     except (ValueError, OSError) as error:
         raise BadInput(f"{args.graph}: {error}") from None
+    if keys is not None:
+        attach_keyboard(simulation.world, keys)
     seconds = args.seconds
     if args.ticks is None and seconds is None:
         seconds = document.settings.get("duration")
@@ -336,6 +343,11 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--seconds", type=_positive_float, help="stop after S simulated seconds")
     run.add_argument("--seed", type=int, default=0, help="seed for random number generators (default 0)")
     run.add_argument("--gui", action="store_true", help="open the PyBullet window")
+    run.add_argument("--keys", metavar="FILE",
+                     help='scripted keyboard for OnKeyboardInput nodes: JSON {"keys": ["A@1.5", "Up@2-3", ...]}')
+    run.add_argument("--key", action="append", default=[], metavar="KEY@TIME",
+                     help="scripted key (repeatable): A@1.5 tap, A@1.5:down, A@1.5:up, Up@1.0-2.5 held; "
+                          "replaces the PyBullet window's keys")
     run.add_argument("--log-level", default="warning", choices=["debug", "info", "warning", "error"],
                      help="Python logging level on stderr (default warning)")
     run.add_argument("--trace", metavar="FILE", help="write what happens every tick as JSON Lines (docs/trace.md)")
