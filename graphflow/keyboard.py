@@ -161,6 +161,16 @@ def load_key_timeline(path: str | Path) -> list[KeyAction]:
     return actions
 
 
+def scripted_keys(path: str | Path | None, specs: Iterable[str] = ()) -> ScriptedKeys | None:
+    """The timeline of ``graphflow run --keys FILE --key SPEC ...`` (file entries first), or None if neither is given."""
+    actions = load_key_timeline(path) if path is not None else []
+    for spec in specs:
+        actions.extend(parse_key_spec(spec))
+    if path is None and not actions:
+        return None
+    return ScriptedKeys(actions)
+
+
 class Keyboard:
     """The key state of one world: polls its source once per physics step and remembers held keys."""
 
