@@ -1,0 +1,1 @@
+"""Tests of graphflow's usd area (a package so test module names stay unique)."""
