@@ -118,6 +118,12 @@ class SurfaceGripperManager:
         return (properties.max_grip_distance, properties.coaxial_force_limit,
                 properties.shear_force_limit, properties.retry_interval)
 
+    def set_break_limits(self, path: str, force_limit: float, torque_limit: float) -> None:
+        """Break a grip when the force or torque magnitude on an attachment point exceeds a limit
+        (the legacy gripper's joint break force and torque; <= 0 disables, not stored in USD)."""
+        properties = self._require(path).properties
+        properties.force_limit, properties.torque_limit = float(force_limit), float(torque_limit)
+
     def set_gravity_disabled_while_held(self, path: str, disabled: bool) -> None:
         """Cancel gravity on objects while this gripper holds them (the legacy gripper's ``disable_gravity``)."""
         (self._gravity_off.add if disabled else self._gravity_off.discard)(path)
@@ -197,12 +203,11 @@ class SurfaceGripperManager:
     def _read_properties(self, component: SurfaceGripperComponent) -> None:
         prim = self.stage.GetPrimAtPath(component.path)
         current = component.properties
-        component.properties = GripperProperties(
-            max_grip_distance=usd_schema.read_float(prim, usd_schema.MAX_GRIP_DISTANCE, current.max_grip_distance),
-            retry_interval=usd_schema.read_float(prim, usd_schema.RETRY_INTERVAL, current.retry_interval),
-            shear_force_limit=usd_schema.read_float(prim, usd_schema.SHEAR_FORCE_LIMIT, current.shear_force_limit),
-            coaxial_force_limit=usd_schema.read_float(prim, usd_schema.COAXIAL_FORCE_LIMIT,
-                                                      current.coaxial_force_limit))
+        current.max_grip_distance = usd_schema.read_float(prim, usd_schema.MAX_GRIP_DISTANCE, current.max_grip_distance)
+        current.retry_interval = usd_schema.read_float(prim, usd_schema.RETRY_INTERVAL, current.retry_interval)
+        current.shear_force_limit = usd_schema.read_float(prim, usd_schema.SHEAR_FORCE_LIMIT, current.shear_force_limit)
+        current.coaxial_force_limit = usd_schema.read_float(prim, usd_schema.COAXIAL_FORCE_LIMIT,
+                                                            current.coaxial_force_limit)
 
     def _on_objects_changed(self, notice, _stage) -> None:
         for path in notice.GetResyncedPaths():

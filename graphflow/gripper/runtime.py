@@ -98,6 +98,8 @@ class GripperProperties:
     retry_interval: float = 0.0
     shear_force_limit: float = -1.0
     coaxial_force_limit: float = -1.0
+    force_limit: float = -1.0      # legacy gripper: break when |F| exceeds it (not a USD property)
+    torque_limit: float = -1.0     # legacy gripper: break when |T| exceeds it (not a USD property)
 
 
 @dataclass
@@ -232,7 +234,8 @@ class SurfaceGripperComponent:
     def check_force_limits(self) -> None:
         shear_limit = self.properties.shear_force_limit
         coaxial_limit = self.properties.coaxial_force_limit
-        if self.status == GripperStatus.OPEN or (shear_limit <= 0 and coaxial_limit <= 0):
+        force_limit, torque_limit = self.properties.force_limit, self.properties.torque_limit
+        if self.status == GripperStatus.OPEN or max(shear_limit, coaxial_limit, force_limit, torque_limit) <= 0:
             return
         for index in sorted(self.active):
             point = self.points[index]
@@ -247,7 +250,9 @@ class SurfaceGripperComponent:
             coaxial = sum(force[i] * direction[i] for i in range(3))
             shear_squared = sum((force[i] - direction[i] * coaxial) ** 2 for i in range(3))
             if (coaxial_limit > 0 and coaxial > coaxial_limit) or (
-                    shear_limit > 0 and shear_squared > shear_limit * shear_limit):
+                    shear_limit > 0 and shear_squared > shear_limit * shear_limit) or (
+                    force_limit > 0 and _norm(self.backend.force_on_gripper(handle, False)) > force_limit) or (
+                    torque_limit > 0 and _norm(self.backend.torque_on_gripper(handle)) > torque_limit):
                 self.queue(("detach", self, index))
                 del self.active[index]
                 self.inactive.add(index)
@@ -284,3 +289,5 @@ class SurfaceGripperComponent:
                 self.on_status_change(self)
 
 
+def _norm(vector) -> float:
+    return math.sqrt(sum(c * c for c in vector))

@@ -166,21 +166,22 @@ class PyBulletAttachments:
     def target_of(self, handle: int) -> tuple[int, int]:
         return self._holds[self._hold_of[handle]].target
 
-    def force_on_gripper(self, handle: int):
+    def force_on_gripper(self, handle: int, rigid_rows_only: bool = True):
         """This point's share of the force the hold's rigid parts put on the gripper body, world axes, N.
 
         The constraint's force on its parent is Isaac's ``getForce`` convention
         (force on actor0, world frame). Along a translation axis that is
         compliant and inside its limits the load is carried by the D6 drive,
         not by a rigid row, and is left out (as PhysX reports joint forces);
-        at a limit or on a locked axis it counts. Points holding one object
+        at a limit or on a locked axis it counts. ``rigid_rows_only=False``
+        gives the whole force, drives included. Points holding one object
         share the result equally.
         """
         hold = self._holds[self._hold_of[handle]]
         state = self.bullet.getConstraintState(hold.constraint)
         force = [state[0], state[1], state[2]]
         frame_rotation = None
-        for index in range(3):
+        for index in range(3 if rigid_rows_only else 0):
             axis, value = hold.axes[index], hold.offset[index]
             if not axis.rigid and axis.lower < value < axis.upper:
                 if frame_rotation is None:
@@ -190,6 +191,15 @@ class PyBulletAttachments:
                 force = [force[i] - along * direction[i] for i in range(3)]
         share = 1.0 / len(hold.members)
         return force[0] * share, force[1] * share, force[2] * share
+
+    def torque_on_gripper(self, handle: int):
+        """This point's share of the hold's torque on the gripper about the joint origin, world axes, N·m."""
+        hold = self._holds[self._hold_of[handle]]
+        state = self.bullet.getConstraintState(hold.constraint)
+        rotation = compose(self.com_pose(*hold.gripper), hold.parent_frame)[1]
+        torque = quat_rotate(rotation, (state[3], state[4], state[5]))
+        share = 1.0 / len(hold.members)
+        return torque[0] * share, torque[1] * share, torque[2] * share
 
     def offset(self, handle: int) -> tuple[float, ...]:
         """The hold's joint coordinates (transX..rotZ, m and rad) relative to the attach pose."""
@@ -304,8 +314,11 @@ class WorldAttachmentBackend:
         if path is not None and path not in self._gravity_restore.values():
             self.world.set_gravity_enabled(path, True)
 
-    def force_on_gripper(self, handle):
-        return self.mechanism.force_on_gripper(handle)
+    def force_on_gripper(self, handle, rigid_rows_only: bool = True):
+        return self.mechanism.force_on_gripper(handle, rigid_rows_only)
+
+    def torque_on_gripper(self, handle):
+        return self.mechanism.torque_on_gripper(handle)
 
     def set_gravity_compensation(self, handle, enabled: bool) -> None:
         """Switch gravity off for the held object (restored on detach if the stage had it on)."""
