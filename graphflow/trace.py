@@ -136,7 +136,9 @@ class TraceRecorder:
         self._pulses: list[str] = []
         self._outputs: dict[str, Any] = {}
         self._grippers: dict[str, dict] = {}
-        self._exec_names = [frozenset(a.name for a in node.spec.exec_outputs) for node in self.instance.compiled.nodes]
+        nodes = self.instance.compiled.nodes
+        self._exec_names = [frozenset(a.name for a in node.spec.exec_outputs) for node in nodes]
+        self._databases = [self.instance.database(node.name) for node in nodes]
         self._outputs = self._output_values()
         self._write_header(graph)
 
@@ -177,7 +179,7 @@ class TraceRecorder:
 
     def _output_values(self) -> dict[str, Any]:
         values = {}
-        for node, database, exec_names in zip(self.instance.compiled.nodes, self.instance._databases, self._exec_names):
+        for node, database, exec_names in zip(self.instance.compiled.nodes, self._databases, self._exec_names):
             for name, value in database.outputs.__dict__.items():
                 if name not in exec_names:
                     values[f"{node.name}.{name}"] = to_json_value(value)
