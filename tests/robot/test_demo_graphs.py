@@ -6,6 +6,7 @@ from pathlib import Path
 import pytest
 
 from graphflow.document import dumps, load_document
+from graphflow.keyboard import attach_keyboard, scripted_keys
 from graphflow.runtime import Simulation
 
 GRAPHS = Path(__file__).resolve().parents[2] / "graphs"
@@ -65,3 +66,49 @@ def test_ur10_stacking_centres_the_top_cube_on_the_bottom_one():
         assert logs[3] == "cube 0 phase 3 gripper_close: gripper Closed"
         assert logs[13] == "cube 1 phase 3 gripper_close: gripper Closed"
         assert logs[-2:] == ["cube 2 phase 10 done: gripper Open", "stacking done"]
+
+
+@pytest.mark.slow
+def test_gantry_keyboard_graph_carries_a_box_where_the_keys_say():
+    simulation = Simulation.load(GRAPHS / "gantry_keyboard.json")
+    attach_keyboard(simulation.world, scripted_keys(GRAPHS / "gantry_keyboard.keys.json"))
+    with simulation:
+        result = simulation.run(seconds=30.0)
+        world = simulation.world
+        box, orientation = world.prim_pose("/World/Boxes/Cube_28")
+        assert result.stopped_by_graph and result.time == pytest.approx(14.0, abs=0.02)   # Escape@14
+        assert [event.message for event in simulation.instance.events] == [
+            "gripper Closed", "gripper Open", "Escape: stopping"]
+        assert math.dist(box, (0.25, -0.25, 1.05)) < 0.01             # on the table (top 1.0), where told
+        assert abs(orientation[2]) < 0.02                               # not spun on the way
+        assert _at_rest(world, "/World/Boxes/Cube_28")
+        targets = [world.get_attribute(f"/World/Joints/{joint}", "drive:linear:physics:targetPosition")
+                   for joint in ("x_joint", "y_joint")]
+        assert targets == pytest.approx([-0.25, 0.25], abs=1e-9)
+
+
+@pytest.mark.slow
+def test_gantry_drive_targets_stop_at_the_joint_limits():
+    simulation = Simulation.load(GRAPHS / "gantry_keyboard.json")
+    attach_keyboard(simulation.world, scripted_keys(None, ["Left@0.1-3.0", "PageUp@0.1-3.0", "Escape@3.1"]))
+    with simulation:
+        simulation.run(seconds=5.0)
+        world = simulation.world
+        x_target = world.get_attribute("/World/Joints/x_joint", "drive:linear:physics:targetPosition")
+        z_target = world.get_attribute("/World/Joints/z_joint", "drive:linear:physics:targetPosition")
+        assert x_target == pytest.approx(world.get_attribute("/World/Joints/x_joint", "physics:upperLimit"))
+        assert z_target == pytest.approx(world.get_attribute("/World/Joints/z_joint", "physics:lowerLimit"))
+
+
+def test_cli_runs_the_gantry_graph_with_key_flags(capsys):
+    from graphflow.cli import main
+
+    assert main(["run", str(GRAPHS / "gantry_keyboard.json"), "--key", "A@0.2", "--key", "Escape@0.5"]) == 0
+    assert capsys.readouterr().out.splitlines()[-2:] == ["gripper Closing", "Escape: stopping"]
+
+
+def test_cli_rejects_a_bad_key_flag(capsys):
+    from graphflow.cli import main
+
+    assert main(["run", str(GRAPHS / "gantry_keyboard.json"), "--key", "A@soon"]) == 2
+    assert "expected KEY@TIME" in capsys.readouterr().err
