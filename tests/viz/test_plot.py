@@ -73,7 +73,7 @@ def test_a_core_graph_timeline_omits_gripper_and_phase_with_notes(tmp_path):
 
 
 def test_plot_command_embeds_the_series_in_the_png(tmp_path):
-    from PIL import Image
+    Image = pytest.importorskip("PIL.Image")
 
     target = tmp_path / "timeline.png"
     result = graphflow("plot", str(pick_trace(tmp_path)), "-o", str(target))

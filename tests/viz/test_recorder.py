@@ -49,6 +49,7 @@ def test_the_default_camera_frames_the_whole_robot(ur10_world):
 
 
 def test_frames_are_taken_every_kth_tick(ur10_world, tmp_path):
+    pytest.importorskip("PIL")
     recorder = VideoRecorder(ur10_world, tmp_path / "frames", fps=20.0, size=SIZE)
     assert recorder.ticks_per_frame == 3 and recorder.fps == pytest.approx(20.0)
     for _ in range(9):
@@ -73,7 +74,7 @@ def graphflow(*args, cwd):
 
 
 def test_run_record_writes_a_gif_at_the_requested_size(tmp_path):
-    from PIL import Image
+    Image = pytest.importorskip("PIL.Image")
 
     graph = tmp_path / "idle.json"
     graph.write_text(json.dumps({"format": "graphflow", "formatVersion": [1, 0],
