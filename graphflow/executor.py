@@ -4,6 +4,14 @@
 connection tables, pull schedules). ``GraphInstance`` holds everything that
 changes at run time, so ``reset()`` restores the initial state and one compiled
 graph can be instanced many times side by side.
+
+Speed (see benchmarks/dispatch.py): everything a tick needs is resolved once.
+The compiled graph keeps, per node, its exec pin names, its exec fan-out as
+ready-made stack entries, and the pure nodes its pulls depend on. Each instance
+binds those tables to its own value dicts (the ``__dict__`` of every node's
+inputs / outputs bags, which live as long as the instance), so a tick is list
+indexing, dict stores of pulled values and compute calls: no name resolution,
+no spec walks, no tuples or lists built per node.
 """
 from __future__ import annotations
 
@@ -22,7 +30,6 @@ from .world import ClockWorld, World
 
 DEFAULT_STEP_BUDGET = 100_000
 KEPT_LOG_EVENTS = 10_000   # the event log keeps the newest lines so long runs stay flat in memory
-_REENTRY = "\0reentry"  # stack marker: compute the node again after its pushed downstream finished
 log = logging.getLogger("graphflow.graph")
 
 _DISABLED = ExecState.DISABLED
@@ -30,6 +37,7 @@ _ENABLED = ExecState.ENABLED
 _ENABLED_AND_PUSH = ExecState.ENABLED_AND_PUSH
 _LATENT_PUSH = ExecState.LATENT_PUSH
 _LATENT_FINISH = ExecState.LATENT_FINISH
+_NO_PULL = (None, None, None, None)
 
 
 class GraphRuntimeError(RuntimeError):
@@ -104,6 +112,16 @@ class CompiledGraph:
             for i, node in enumerate(document.nodes)
         )
         self.event_sources = tuple(n.index for n in self.nodes if n.spec.is_event_source)
+        self.exec_input_names = tuple(tuple(a.name for a in n.spec.exec_inputs) for n in self.nodes)
+        self.exec_output_names = tuple(tuple(a.name for a in n.spec.exec_outputs) for n in self.nodes)
+        # exec stack entries are (node index, enabled exec input names): () for an event source or a re-entry
+        self.plain_entries = tuple((i, ()) for i in range(len(self.nodes)))
+        # per node, its exec outputs last to first, each with its targets last to first as stack entries:
+        # pushing in this order pops the first output's first target first (LIFO stack, connection order)
+        self.push_plans = tuple(
+            tuple((name, tuple((dst, (dst_name,)) for dst, dst_name in reversed(targets)))
+                  for name, targets in reversed(n.exec_targets))
+            for n in self.nodes)
         # exec nodes each pure node depends on (through other pure nodes): their computes invalidate it
         self.pure_exec_dependencies = tuple(
             tuple(sorted(j for j in nx.ancestors(data_graph, i) if not pure[j])) if pure[i] else ()
@@ -143,6 +161,11 @@ class _Values:
         return dict(self.__dict__)
 
 
+def _refill(values: _Values, initial: dict) -> None:
+    values.__dict__.clear()
+    values.__dict__.update(initial)
+
+
 class NodeDatabase:
     """What a node's compute sees: its inputs, outputs, state and the world (see docs/architecture.md)."""
 
@@ -159,11 +182,12 @@ class NodeDatabase:
         self.state = _Values({})
 
     def reset(self, node: CompiledNode) -> None:
+        """Initial values, refilled in place: the instance's pull tables hold these very dicts."""
         spec = node.spec
-        self.inputs = _Values({a.name: a.initial_value() for a in spec.inputs})
+        _refill(self.inputs, {a.name: a.initial_value() for a in spec.inputs})
         self.inputs.__dict__.update(node.authored)
-        self.outputs = _Values({a.name: a.initial_value() for a in spec.outputs})
-        self.state = _Values({a.name: a.initial_value() for a in spec.state})
+        _refill(self.outputs, {a.name: a.initial_value() for a in spec.outputs})
+        _refill(self.state, {a.name: a.initial_value() for a in spec.state})
         self.internal = {}
 
     @property
@@ -219,20 +243,46 @@ class GraphInstance:
         self.on_log = on_log
         self.observer = observer   # optional: .on_compute(tick, node_name, fired: list[str]) for traces
         self._databases = [NodeDatabase(self, node) for node in compiled.nodes]
+        self._bind()
         self.reset()
+
+    def _bind(self) -> None:
+        """Bind the compiled tables to this instance's value dicts (which reset() refills in place)."""
+        compiled, databases = self.compiled, self._databases
+        self._computes = tuple(node.node_type.compute for node in compiled.nodes)
+        self._input_dicts = tuple(database.inputs.__dict__ for database in databases)
+        self._output_dicts = tuple(database.outputs.__dict__ for database in databases)
+        # pulls[i]: (inputs dict of i, input name, outputs dict of the source, source output name)
+        self._pulls = tuple(
+            tuple((self._input_dicts[node.index], name, self._output_dicts[source], source_name)
+                  for name, source, source_name in node.pulls)
+            for node in compiled.nodes)
+        # one step per pure node: (index, compute, database, first pull as four fields, the other pulls,
+        # exec nodes it depends on); most pure nodes pull one or two inputs, so the first is unrolled
+        steps = [(i, self._computes[i], databases[i], *(self._pulls[i][0] if self._pulls[i] else _NO_PULL),
+                  self._pulls[i][1:], compiled.pure_exec_dependencies[i])
+                 if compiled.is_pure[i] else None for i in range(len(compiled.nodes))]
+        self._pure_plans = tuple(tuple(steps[p] for p in node.pure_schedule) for node in compiled.nodes)
 
     # ---------------------------------------------------------------- state
     def reset(self) -> None:
         """Back to the initial state: authored inputs, default outputs and state, variables, no latent node."""
+        count = len(self.compiled.nodes)
         self.tick_count = 0
         self.stop_requested = False
         self.events: deque[LogEvent] = deque(maxlen=KEPT_LOG_EVENTS)
-        self.compute_counts = [0] * len(self.compiled.nodes)
+        self.compute_counts = [0] * count
         self.variables = dict(self.compiled.variable_defaults)
         self._latent: dict[int, None] = {}     # insertion-ordered set
+        self._computes_this_tick = 0
+        # Memoisation clock: the epoch advances at every exec compute and at the start of every tick.
+        # A pure node is fresh while its stamp (the epoch it computed at) is not older than this tick's
+        # first epoch and no exec node it depends on computed after it.
         self._exec_epoch = 0
-        self._last_exec_compute = [0] * len(self.compiled.nodes)
-        self._pure_stamp = [(-1, -1)] * len(self.compiled.nodes)
+        self._tick_epoch = 0
+        self._epoch_tick = 0                   # the tick_count _tick_epoch belongs to
+        self._last_exec_compute = [0] * count
+        self._pure_stamp = [-1] * count
         for node, database in zip(self.compiled.nodes, self._databases):
             database.reset(node)
             if node.node_type.initialize is not None:
@@ -258,99 +308,161 @@ class GraphInstance:
     def tick(self) -> None:
         """Evaluate one tick: event sources, then latent continuations, draining the exec stack."""
         self.tick_count += 1
+        self._start_tick_epoch()
         self._computes_this_tick = 0
-        latent_before = list(self._latent)
+        entries = self.compiled.plain_entries
+        latent_before = list(self._latent) if self._latent else ()
         for index in self.compiled.event_sources:
-            self._run_from(index, None)
+            self._run_from(entries[index])
         for index in latent_before:
             if index in self._latent:
-                self._run_from(index, None)
+                self._run_from(entries[index])
 
-    def _run_from(self, index: int, pin: str | None) -> None:
-        stack = [(index, pin)]
-        nodes = self.compiled.nodes
-        budget = self.compiled.step_budget
-        while stack:
-            index, pin = stack.pop()
-            self._computes_this_tick += 1
-            if self._computes_this_tick > budget:
-                raise self._budget_error()
-            self._compute(index, () if pin is _REENTRY or pin is None else (pin,))
-            outputs = self._databases[index].outputs.__dict__
-            reentry_pushed = False
-            for name, targets in reversed(nodes[index].exec_targets):
-                state = outputs[name]
-                if state == _DISABLED:
-                    continue
-                if state == _LATENT_PUSH:
-                    self._latent[index] = None
-                    continue
-                if state == _LATENT_FINISH:
-                    self._latent.pop(index, None)
-                elif state == _ENABLED_AND_PUSH and not reentry_pushed:
-                    stack.append((index, _REENTRY))
-                    reentry_pushed = True
-                for target in reversed(targets):
-                    stack.append(target)
+    def _start_tick_epoch(self) -> None:
+        self._exec_epoch += 1
+        self._tick_epoch = self._exec_epoch
+        self._epoch_tick = self.tick_count
+
+    def _run_from(self, entry: tuple[int, tuple[str, ...]]) -> None:
+        """Drain the exec stack from one entry: compute a node, then push what its exec outputs enabled.
+
+        The compute is ``_compute`` written out in the loop (this is the hot path): keep the two in step.
+        """
+        compiled = self.compiled
+        stack = [entry]
+        pop, push = stack.pop, stack.append
+        computes, databases = self._computes, self._databases
+        input_dicts, output_dicts, pulls = self._input_dicts, self._output_dicts, self._pulls
+        pure_plans, compute_pure = self._pure_plans, self._compute_pure
+        exec_input_names, exec_output_names = compiled.exec_input_names, compiled.exec_output_names
+        push_plans, self_entries = compiled.push_plans, compiled.plain_entries
+        last_exec_compute, compute_counts, latent = self._last_exec_compute, self.compute_counts, self._latent
+        observer = self.observer
+        budget = compiled.step_budget
+        count = self._computes_this_tick
+        try:
+            while stack:
+                index, pins = pop()
+                count += 1
+                if count > budget:
+                    raise self._budget_error()
+                # pull: stale pure upstream nodes compute, then this node's data inputs are copied in
+                plan = pure_plans[index]
+                if plan:
+                    compute_pure(plan)
+                for inputs, name, source, source_name in pulls[index]:
+                    inputs[name] = source[source_name]
+                inputs, outputs = input_dicts[index], output_dicts[index]
+                for name in exec_input_names[index]:
+                    inputs[name] = _ENABLED if name in pins else _DISABLED
+                for name in exec_output_names[index]:
+                    outputs[name] = _DISABLED
+                self._exec_epoch = epoch = self._exec_epoch + 1
+                last_exec_compute[index] = epoch
+                compute_counts[index] += 1
+                try:
+                    computes[index](databases[index])
+                except GraphRuntimeError:
+                    raise
+                except Exception as error:
+                    raise self._failure(index, error) from error
+                if observer is not None:
+                    self._observe(index)
+                # push: exec outputs last to first, so the first output's first target pops first
+                reentry_pushed = False
+                for name, targets in push_plans[index]:
+                    state = outputs[name]
+                    if state == _DISABLED:
+                        continue
+                    if state == _LATENT_PUSH:
+                        latent[index] = None
+                        continue
+                    if state == _LATENT_FINISH:
+                        latent.pop(index, None)
+                    elif state == _ENABLED_AND_PUSH and not reentry_pushed:
+                        push(self_entries[index])   # re-enter after the downstream pushed below completes
+                        reentry_pushed = True
+                    for target in targets:
+                        push(target)
+        finally:
+            self._computes_this_tick = count
 
     def compute_node(self, node_name: str, pins: tuple[str, ...] = ()) -> None:
         """Compute one node with the given exec inputs enabled, without pushing downstream (test harness)."""
         index = self.compiled.index_of[node_name]
-        self._compute(index, pins)
-        outputs = self._databases[index].outputs.__dict__
-        for attribute in self.compiled.nodes[index].spec.exec_outputs:
-            if outputs[attribute.name] == _LATENT_PUSH:
+        if self._epoch_tick != self.tick_count:   # the harness advanced tick_count itself
+            self._start_tick_epoch()
+        self._compute(index, tuple(pins))
+        outputs = self._output_dicts[index]
+        for name in self.compiled.exec_output_names[index]:
+            if outputs[name] == _LATENT_PUSH:
                 self._latent[index] = None
-            elif outputs[attribute.name] == _LATENT_FINISH:
+            elif outputs[name] == _LATENT_FINISH:
                 self._latent.pop(index, None)
 
     def _compute(self, index: int, pins: tuple[str, ...]) -> None:
-        node = self.compiled.nodes[index]
-        database = self._databases[index]
-        self._pull(node, database)
-        inputs, outputs = database.inputs.__dict__, database.outputs.__dict__
-        for attribute in node.spec.exec_inputs:
-            inputs[attribute.name] = _ENABLED if attribute.name in pins else _DISABLED
-        for attribute in node.spec.exec_outputs:
-            outputs[attribute.name] = _DISABLED
+        """Compute an exec node: pull (computing stale pure upstream nodes), set exec pins, call compute."""
+        plan = self._pure_plans[index]
+        if plan:
+            self._compute_pure(plan)
+        for inputs, name, source, source_name in self._pulls[index]:
+            inputs[name] = source[source_name]
+        inputs, outputs = self._input_dicts[index], self._output_dicts[index]
+        compiled = self.compiled
+        for name in compiled.exec_input_names[index]:
+            inputs[name] = _ENABLED if name in pins else _DISABLED
+        for name in compiled.exec_output_names[index]:
+            outputs[name] = _DISABLED
         self._exec_epoch += 1
         self._last_exec_compute[index] = self._exec_epoch
         self.compute_counts[index] += 1
-        self._call(node, database)
-        if self.observer is not None:
-            fired = [a.name for a in node.spec.exec_outputs if outputs[a.name] != _DISABLED]
-            self.observer.on_compute(self.tick_count, node.name, fired, database)
-
-    def _pull(self, node: CompiledNode, database: NodeDatabase) -> None:
-        databases = self._databases
-        for pure_index in node.pure_schedule:
-            if self._pure_is_stale(pure_index):
-                pure_node = self.compiled.nodes[pure_index]
-                pure_database = databases[pure_index]
-                inputs = pure_database.inputs.__dict__
-                for name, source, source_name in pure_node.pulls:
-                    inputs[name] = databases[source].outputs.__dict__[source_name]
-                self._pure_stamp[pure_index] = (self.tick_count, self._exec_epoch)
-                self.compute_counts[pure_index] += 1
-                self._call(pure_node, pure_database)
-        inputs = database.inputs.__dict__
-        for name, source, source_name in node.pulls:
-            inputs[name] = databases[source].outputs.__dict__[source_name]
-
-    def _pure_is_stale(self, index: int) -> bool:
-        tick, epoch = self._pure_stamp[index]
-        if tick != self.tick_count:
-            return True
-        last = self._last_exec_compute
-        return any(last[j] > epoch for j in self.compiled.pure_exec_dependencies[index])
-
-    def _call(self, node: CompiledNode, database: NodeDatabase) -> None:
+        database = self._databases[index]
         try:
-            node.node_type.compute(database)
+            self._computes[index](database)
         except GraphRuntimeError:
             raise
         except Exception as error:
-            raise GraphRuntimeError(f"{node.spec.id} failed: {type(error).__name__}: {error}", node.name) from error
+            raise self._failure(index, error) from error
+        if self.observer is not None:
+            self._observe(index)
+
+    def _observe(self, index: int) -> None:
+        outputs = self._output_dicts[index]
+        fired = [name for name in self.compiled.exec_output_names[index] if outputs[name] != _DISABLED]
+        self.observer.on_compute(self.tick_count, self.compiled.nodes[index].name, fired, self._databases[index])
+
+    def _compute_pure(self, plan) -> None:
+        """Compute the stale pure nodes of a pull plan (sources first), each at most once per tick."""
+        stamps, last, counts = self._pure_stamp, self._last_exec_compute, self.compute_counts
+        tick_epoch, epoch = self._tick_epoch, self._exec_epoch
+        index = -1
+        try:
+            for index, compute, database, inputs, name, source, source_name, more, dependencies in plan:
+                stamp = stamps[index]
+                if stamp >= tick_epoch:             # computed this tick: fresh unless an exec dependency recomputed
+                    if not dependencies:
+                        continue
+                    for dependency in dependencies:
+                        if last[dependency] > stamp:
+                            break
+                    else:
+                        continue
+                if inputs is not None:
+                    inputs[name] = source[source_name]
+                    if more:
+                        for inputs, name, source, source_name in more:
+                            inputs[name] = source[source_name]
+                stamps[index] = epoch
+                counts[index] += 1
+                compute(database)
+        except GraphRuntimeError:
+            raise
+        except Exception as error:
+            raise self._failure(index, error) from error
+
+    def _failure(self, index: int, error: Exception) -> GraphRuntimeError:
+        node = self.compiled.nodes[index]
+        return GraphRuntimeError(f"{node.spec.id} failed: {type(error).__name__}: {error}", node.name)
 
     def _budget_error(self) -> StepBudgetExceeded:
         busiest = Counter({node.name: count for node, count in zip(self.compiled.nodes, self.compute_counts)})
