@@ -35,9 +35,7 @@ class TraceError(ValueError):
 
 def to_json_value(value: Any) -> Any:
     """A plain JSON value for an attribute value: tuples and arrays become lists, enums their names."""
-    if isinstance(value, bool) or value is None or isinstance(value, (int, str)):
-        return value
-    if isinstance(value, float):
+    if value is None or isinstance(value, (bool, int, float, str)):
         return value
     if hasattr(value, "tolist"):       # numpy arrays and scalars
         return to_json_value(value.tolist())
