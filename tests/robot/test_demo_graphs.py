@@ -5,7 +5,7 @@ from pathlib import Path
 
 import pytest
 
-from graphflow.document import dumps, load_document
+from graphflow.document import dumps, load_document, parse_document
 from graphflow.keyboard import attach_keyboard, scripted_keys
 from graphflow.runtime import Simulation
 
@@ -112,3 +112,33 @@ def test_cli_rejects_a_bad_key_flag(capsys):
 
     assert main(["run", str(GRAPHS / "gantry_keyboard.json"), "--key", "A@soon"]) == 2
     assert "expected KEY@TIME" in capsys.readouterr().err
+
+
+@pytest.mark.slow
+def test_ur10_pick_place_tuned_reports_the_grip_and_places_the_green_cube():
+    simulation, result = _run("ur10_pick_place_tuned.json")
+    with simulation:
+        world = simulation.world
+        position, _ = world.prim_pose("/World/Cube")
+        assert result.stopped_by_graph
+        assert [event.message for event in simulation.instance.events] == [
+            "Gripper CLOSE command issued. Status: SUCCESS (Object Gripped)",
+            "Gripper OPEN command issued. Status: Object Released",
+            "Pick and Place routine has finished."]
+        assert math.dist(position, (-0.4, 0.5, 0.025)) < 0.01      # placed at z 0.05: dropped 25 mm to the ground
+        assert _at_rest(world, "/World/Cube")
+        assert world.stage.GetPrimAtPath("/World/ur10/ee_link/SurfaceGripper_01").GetAttribute(
+            "isaac:maxGripDistance").Get() == pytest.approx(0.02)
+
+
+@pytest.mark.slow
+def test_a_short_grip_threshold_misses_the_cube_and_says_so():
+    data = json.loads((GRAPHS / "ur10_pick_place_tuned.json").read_text())
+    next(n for n in data["nodes"] if n["name"] == "gripper")["inputs"]["gripThreshold"] = 0.002  # cup 5 mm above
+    simulation = Simulation(parse_document(data, str(GRAPHS / "ur10_pick_place_tuned.json")))
+    with simulation:
+        simulation.run(seconds=30.0)
+        position, _ = simulation.world.prim_pose("/World/Cube")
+        assert [event.message for event in simulation.instance.events][0] == \
+            "Gripper CLOSE command issued. Status: FAILURE (Missed Object)"
+        assert math.dist(position[:2], (0.4, 0.4)) < 0.01
