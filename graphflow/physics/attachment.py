@@ -24,6 +24,11 @@ moved every step* by a compliance model of the D6:
   applied forces; the inertia of following the gripper rigidly is subtracted.
   Because the constraint wrench that moves the object cancels out of this
   estimate, moving the frame does not feed back into the load.
+* While the held object touches anything (a table, a neighbouring box) the
+  joint holds still: a contact is a far stiffer spring than the joint, and
+  feeding its force back through the explicit load would make the pair
+  oscillate. Compliance acts on objects that hang free, which is where sag,
+  bending and swinging happen.
 * Several attachment points holding the same object share one constraint and
   one model (their springs act in parallel: stiffnesses and dampings add; the
   axes, origin and limits are those of the first point that attached). Nine
@@ -173,7 +178,7 @@ class PyBulletAttachments:
         (force on actor0, world frame). Along a translation axis that is
         compliant and inside its limits the load is carried by the D6 drive,
         not by a rigid row, and is left out (as PhysX reports joint forces);
-        at a limit or on a locked axis it counts. ``rigid_rows_only=False``
+        on a locked axis it counts, and at a limit the part pressing into it. ``rigid_rows_only=False``
         gives the whole force, drives included. Points holding one object
         share the result equally.
         """
@@ -183,12 +188,16 @@ class PyBulletAttachments:
         frame_rotation = None
         for index in range(3 if rigid_rows_only else 0):
             axis, value = hold.axes[index], hold.offset[index]
-            if not axis.rigid and axis.lower < value < axis.upper:
-                if frame_rotation is None:
-                    frame_rotation = compose(self.com_pose(*hold.gripper), hold.parent_frame)[1]
-                direction = quat_rotate(frame_rotation, AXIS_VECTORS["XYZ"[index]])
-                along = _dot(force, direction)
-                force = [force[i] - along * direction[i] for i in range(3)]
+            if axis.rigid:
+                continue
+            if frame_rotation is None:
+                frame_rotation = compose(self.com_pose(*hold.gripper), hold.parent_frame)[1]
+            direction = quat_rotate(frame_rotation, AXIS_VECTORS["XYZ"[index]])
+            along = _dot(force, direction)
+            # a limit only pushes back: at the lower stop it pulls the gripper towards -axis, at the upper towards +axis
+            if (value <= axis.lower and along < 0.0) or (value >= axis.upper and along > 0.0):
+                continue
+            force = [force[i] - along * direction[i] for i in range(3)]
         share = 1.0 / len(hold.members)
         return force[0] * share, force[1] * share, force[2] * share
 
@@ -233,6 +242,9 @@ class PyBulletAttachments:
         current = (v_object, w_object, v_rigid, w_gripper)
         previous, hold.previous = hold.previous, current
         if previous is None:
+            return
+        if self.bullet.getContactPoints(bodyA=hold.target[0], linkIndexA=hold.target[1]):
+            hold.rate = [0.0] * 6     # supported by something else: the joint holds still (see module doc)
             return
         relative_linear = _scale(_sub(_sub(v_object, previous[0]), _sub(v_rigid, previous[2])), 1.0 / dt)
         relative_angular = _scale(_sub(_sub(w_object, previous[1]), _sub(w_gripper, previous[3])), 1.0 / dt)

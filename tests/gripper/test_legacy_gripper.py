@@ -1,0 +1,179 @@
+"""The tutorials' legacy ``SurfaceGripper`` class on the UR10 (graphflow/assets/ur10.usda).
+
+The three experiments of the tutorial: a force limit below a heavy cube's
+weight drops it while a light cube is carried; a barely damped attachment lets
+the held cube oscillate relative to the gripper during an accelerating
+transport far more than the tuned damping; and the grip threshold decides
+whether a cube 5 mm away is reached.
+"""
+import math
+
+import pytest
+
+from graphflow.gripper.legacy import SurfaceGripper
+from graphflow.physics import asset_path, create_world
+from graphflow.usd.transforms import quat_rotate, relative
+
+EE = "/ur10/ee_link"
+CUBE = "/World/Cube"
+CUBE_SIZE = 0.05
+TIP = (0.163941, 0.688, 0.486)      # the suction point 0.1611 m out of ee_link at the default joint state
+ARM = "/ur10"
+
+
+def _ur10_world(cube_mass, gap):
+    """The UR10 at its default pose over a cube on a pedestal, the cube's top *gap* below the suction point."""
+    from pxr import Gf, Sdf, Usd, UsdGeom, UsdPhysics
+
+    stage = Usd.Stage.CreateInMemory()
+    UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)
+    UsdGeom.SetStageMetersPerUnit(stage, 1.0)
+    UsdPhysics.Scene.Define(stage, "/World/physicsScene")
+    stage.DefinePrim("/ur10").GetReferences().AddReference(str(asset_path("ur10.usda")))
+    cube_top = TIP[2] - gap
+    pedestal_height = cube_top - CUBE_SIZE
+    pedestal = UsdGeom.Cube.Define(stage, "/World/Pedestal")
+    pedestal.CreateSizeAttr(1.0)
+    pedestal.AddTranslateOp().Set(Gf.Vec3d(TIP[0], TIP[1], pedestal_height / 2))
+    pedestal.AddScaleOp().Set(Gf.Vec3f(0.1, 0.1, pedestal_height))
+    UsdPhysics.CollisionAPI.Apply(pedestal.GetPrim())
+    cube = UsdGeom.Cube.Define(stage, CUBE)
+    cube.CreateSizeAttr(CUBE_SIZE)
+    cube.AddTranslateOp().Set(Gf.Vec3d(TIP[0], TIP[1], cube_top - CUBE_SIZE / 2))
+    UsdPhysics.RigidBodyAPI.Apply(cube.GetPrim())
+    UsdPhysics.CollisionAPI.Apply(cube.GetPrim())
+    UsdPhysics.MassAPI.Apply(cube.GetPrim()).CreateMassAttr(cube_mass)
+    return create_world(stage)
+
+
+def _steps(world, gripper, count, targets=None):
+    """Step, calling the gripper's update() after every step as Isaac's tasks do."""
+    for index in range(count):
+        if targets is not None:
+            world.set_joint_targets(ARM, range(6), positions=targets(index))
+        world.step()
+        gripper.update()
+
+
+DEFAULT = (-math.pi / 2, -math.pi / 2, -math.pi / 2, -math.pi / 2, math.pi / 2, 0.0)
+
+
+def _lift(index, frames=60, angle=0.35):
+    """Raise the arm with the shoulder along a smooth (accelerate, then decelerate) profile."""
+    progress = min(index / frames, 1.0)
+    blend = 0.5 * (1 - math.cos(math.pi * progress))
+    return (DEFAULT[0], DEFAULT[1] + angle * blend, *DEFAULT[2:])
+
+
+@pytest.mark.parametrize("mass, carried", [(5.0, False), (0.1, True)])
+def test_force_limit_below_the_weight_drops_the_heavy_cube(mass, carried):
+    world = _ur10_world(mass, gap=0.005)
+    try:
+        gripper = SurfaceGripper(EE, translate=0.1611, direction="x", grip_threshold=0.01, force_limit=30.0,
+                                 disable_gravity=False)
+        gripper.initialize(world)
+        start = world.prim_pose(CUBE)[0][2]
+        gripper.close()
+        assert gripper.is_closed()
+        _steps(world, gripper, 120, targets=_lift)
+        risen = world.prim_pose(CUBE)[0][2] - start
+        if carried:
+            assert gripper.is_closed() and gripper.gripped_objects() == [CUBE]
+            assert risen > 0.15
+        else:          # 5 kg pull 49 N > 30 N: the grip breaks after the settling delay, update() opens
+            assert not gripper.is_closed() and gripper.gripped_objects() == []
+            assert gripper.manager.component(gripper.gripper_path).events.force_breaks == 1
+            assert risen < 0.02
+    finally:
+        world.close()
+
+
+def _smooth(index, frames):
+    """0 -> 1 with zero velocity at both ends: the arm accelerates, then decelerates."""
+    return 0.5 * (1 - math.cos(math.pi * min(index / frames, 1.0)))
+
+
+def _relative_motion(kd):
+    """Positions of the held cube in the end effector's frame while the arm swings it 0.5 rad in 2/3 s."""
+    world = _ur10_world(0.1, gap=0.005)
+    try:
+        gripper = SurfaceGripper(EE, translate=0.1611, grip_threshold=0.01, kp=1.0e2, kd=kd)
+        gripper.initialize(world)
+        gripper.close()
+        _steps(world, gripper, 10)
+        lifted = (DEFAULT[0], DEFAULT[1] + 0.35, *DEFAULT[2:])
+        _steps(world, gripper, 150, targets=lambda i: (DEFAULT[0], DEFAULT[1] + 0.35 * _smooth(i, 120),
+                                                        *DEFAULT[2:]))    # a slow lift off the pedestal
+        samples = []
+        for index in range(60):
+            world.set_joint_targets(ARM, range(6), positions=(lifted[0] + 0.5 * _smooth(index, 40), *lifted[1:]))
+            world.step()
+            gripper.update()
+            samples.append(relative(world.prim_pose(EE), world.prim_pose(CUBE))[0])
+        assert gripper.is_closed()
+        return samples
+    finally:
+        world.close()
+
+
+def _rms_deviation(samples):
+    """RMS distance from where the cube sat relative to the gripper when the transport began."""
+    first = samples[0]
+    return math.sqrt(sum(math.dist(sample, first) ** 2 for sample in samples) / len(samples))
+
+
+def test_low_damping_lets_the_held_cube_move_far_more_than_the_tuned_damping():
+    loose = _rms_deviation(_relative_motion(kd=1.0))
+    tuned = _rms_deviation(_relative_motion(kd=1.0e4))
+    assert loose > 1e-3                      # the cube swings millimetres with kd = 1 ...
+    assert loose >= 3 * tuned                # ... at least three times the tuned attachment's motion
+
+
+@pytest.mark.parametrize("threshold, grips", [(0.001, False), (0.02, True)])
+def test_grip_threshold_decides_whether_a_cube_5mm_away_is_reached(threshold, grips):
+    world = _ur10_world(0.1, gap=0.005)
+    try:
+        gripper = SurfaceGripper(EE, translate=0.1611, grip_threshold=threshold)
+        gripper.initialize(world)
+        _steps(world, gripper, 5)
+        gripper.close()
+        _steps(world, gripper, 5)
+        assert gripper.is_closed() is grips
+        assert gripper.gripped_objects() == ([CUBE] if grips else [])
+    finally:
+        world.close()
+
+
+def test_default_state_post_reset_and_forward():
+    world = _ur10_world(0.1, gap=0.005)
+    try:
+        gripper = SurfaceGripper(EE, translate=0.1611)
+        gripper.initialize(world, articulation_num_dofs=6)
+        assert gripper.get_default_state() == {"opened": True}
+        assert gripper.forward("close") == (None,) * 6
+        assert gripper.is_closed()
+        gripper.set_default_state(opened=True)
+        world.reset()
+        gripper.post_reset()
+        assert not gripper.is_closed()
+        with pytest.raises(ValueError, match="action must be 'open' or 'close'"):
+            gripper.forward("grip")
+        tip = quat_rotate(world.prim_pose(EE)[1], (1.0, 0.0, 0.0))
+        assert tip == pytest.approx((0.0, 0.0, -1.0), abs=1e-6)     # the ray points down at the default pose
+    finally:
+        world.close()
+
+
+@pytest.mark.parametrize("arguments, name", [
+    (dict(grip_threshold=-0.01), "grip_threshold"),
+    (dict(force_limit=-1.0), "force_limit"),
+    (dict(torque_limit=-1.0), "torque_limit"),
+    (dict(kp=-1.0), "kp"),
+    (dict(kd=-1.0), "kd"),
+    (dict(bend_angle=-0.1), "bend_angle"),
+    (dict(direction="w"), "direction"),
+    (dict(translate=math.nan), "translate"),
+])
+def test_out_of_range_parameters_are_clear_errors(arguments, name):
+    with pytest.raises(ValueError, match=name):
+        SurfaceGripper(EE, **arguments)
