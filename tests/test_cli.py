@@ -99,3 +99,15 @@ def test_new_writes_a_runnable_starter_and_never_overwrites(tmp_path):
     assert again.returncode == 2
     assert "already exists" in again.stderr
     assert starter.read_text() == "my edits\n"
+
+
+def test_stage_graph_stdout_holds_only_the_graph_lines(tmp_path):
+    graph = tmp_path / "hello.json"
+    graph.write_text(json.dumps({"format": "graphflow", "formatVersion": [1, 0],
+        "settings": {"stage": "asset:ur10.usda"},
+        "nodes": [{"name": "tick", "type": "omni.graph.action.OnTick"},
+                  {"name": "hello", "type": "omni.graph.ui_nodes.PrintText", "inputs": {"text": "hello"}}],
+        "connections": [{"src": "tick.outputs:tick", "dst": "hello.inputs:execIn"}]}))
+    result = graphflow("run", str(graph), "--ticks", "2")
+    assert result.returncode == 0, result.stderr
+    assert result.stdout == "hello\nhello\n"

@@ -79,6 +79,10 @@ from __future__ import annotations
 from graphflow.usd.errors import StageError, UnsupportedPrimWarning
 
 from .assets import asset_path, resolve_stage
+from .native_output import native_stdout_silenced
+
+with native_stdout_silenced():
+    import pybullet  # noqa: F401  (imported here once so its banner never reaches stdout)
 
 __all__ = ["create_world", "StageError", "UnsupportedPrimWarning", "asset_path", "resolve_stage",
            "PyBulletWorld", "RayHit", "Contact", "ATTRIBUTES"]

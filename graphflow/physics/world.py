@@ -17,6 +17,7 @@ from graphflow.usd.description import StageDescription
 from graphflow.usd.transforms import IDENTITY_POSE, Pose, compose, invert, quat_rotate, relative
 from graphflow.world import WorldError
 
+from .native_output import native_stdout_silenced
 from .builder import ArticulationHandle, BodyHandle, BuiltScene, SceneBuilder
 
 DEFAULT_TIME_STEP = 1.0 / 60.0      # Isaac Sim's default physics rate
@@ -81,7 +82,11 @@ class PyBulletWorld:
         self.step_index = 0
         self.playing = True
         try:
-            self.client = BulletClient(connection_mode=pybullet.GUI if gui else pybullet.DIRECT)
+            if gui:
+                self.client = BulletClient(connection_mode=pybullet.GUI)
+            else:
+                with native_stdout_silenced():
+                    self.client = BulletClient(connection_mode=pybullet.DIRECT)
         except pybullet.error as error:
             raise WorldError(f"cannot open a PyBullet {'GUI' if gui else 'DIRECT'} client: {error}") from None
         self._mesh_directory = tempfile.mkdtemp(prefix="graphflow-meshes-")
