@@ -120,3 +120,14 @@ def test_detach_restores_collisions_and_lets_the_object_fall(bullet):
     for _ in range(30):
         bullet.stepSimulation()
     assert bullet.getBasePositionAndOrientation(held)[0][2] < start[0][2] - 0.1
+
+
+def test_a_soft_barely_damped_hold_on_an_object_resting_on_a_table_stays_still(bullet):
+    """Contacts are stiff: without extra damping while touching, k = 100, c = 1 oscillated and grew."""
+    table = bullet.createCollisionShape(pybullet.GEOM_BOX, halfExtents=[0.2, 0.2, 0.01])
+    bullet.createMultiBody(0, table, basePosition=(0.0, 0.0, 0.93))
+    soft = AxisCompliance(float("-inf"), float("inf"), 100.0, 1.0)
+    attachments, handle, held, start, heights = _hang(bullet, (soft,) * 3 + (LOCKED,) * 3,
+                                                      object_position=(0.0, 0.0, 0.96), steps=300)
+    assert max(abs(z - start[0][2]) for z in heights) < 2e-3
+    assert max(abs(v) for v in attachments.offset(handle)) < 2e-3
