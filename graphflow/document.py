@@ -16,7 +16,8 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
 
-from ._graphs import has_cycle
+import networkx as nx
+
 from .registry import Registry, default_registry
 from .spec import NodeType
 from .types import TypeMismatch, can_connect, parse_type
@@ -319,7 +320,7 @@ def _connection_problems(source: str, document: GraphDocument, types: dict[str, 
     problems = []
     names = {n.name for n in document.nodes}
     data_sources: dict[tuple[str, str], list[str]] = {}
-    data_edges: list[tuple[str, str]] = []   # in connection order (the cycle report depends on it)
+    data_graph = nx.DiGraph()
     for connection in document.connections:
         label = f"{connection.src} -> {connection.dst}"
         endpoints = []
@@ -344,35 +345,22 @@ def _connection_problems(source: str, document: GraphDocument, types: dict[str, 
             continue
         if not dst_attribute.is_execution:
             data_sources.setdefault((connection.dst_node, connection.dst_attr), []).append(connection.src)
-            data_edges.append((connection.src_node, connection.dst_node))
+            data_graph.add_edge(connection.src_node, connection.dst_node)
     for (node_name, attr_name), sources in data_sources.items():
         if len(sources) > 1:
             problems.append(Problem(source, f"more than one source into a data input: {', '.join(sources)}", node=node_name, attribute=attr_name, kind="connection"))
-    for cycle in _data_cycles(data_edges):
+    for cycle in _data_cycles(data_graph):
         problems.append(Problem(source, f"data cycle: {' -> '.join(cycle + [cycle[0]])}", node=cycle[0]))
     return problems
 
 
-def _data_cycles(edges: list[tuple[str, str]]) -> list[list[str]]:
-    """One cycle per strongly connected component that loops (deterministic order).
-
-    A plain check first; only a graph that has a cycle pays for importing networkx to name it.
-    """
-    graph: dict[str, set[str]] = {}
-    for src, dst in edges:
-        graph.setdefault(src, set()).add(dst)
-        graph.setdefault(dst, set())
-    if not has_cycle(graph):
-        return []
-    import networkx as nx
-
-    nx_graph = nx.DiGraph()
-    nx_graph.add_edges_from(edges)
+def _data_cycles(graph: nx.DiGraph) -> list[list[str]]:
+    """One cycle per strongly connected component that loops (deterministic order)."""
     cycles = []
-    for component in nx.strongly_connected_components(nx_graph):
+    for component in nx.strongly_connected_components(graph):
         members = sorted(component)
-        if len(members) == 1 and not nx_graph.has_edge(members[0], members[0]):
+        if len(members) == 1 and not graph.has_edge(members[0], members[0]):
             continue
-        cycle = nx.find_cycle(nx_graph.subgraph(members), source=members[0])
+        cycle = nx.find_cycle(graph.subgraph(members), source=members[0])
         cycles.append([edge[0] for edge in cycle])
     return sorted(cycles)

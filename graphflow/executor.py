@@ -20,7 +20,8 @@ from collections import Counter, deque
 from dataclasses import dataclass
 from typing import Any, Callable
 
-from ._graphs import lexicographical_topological_sort, predecessors_of, reachable
+import networkx as nx
+
 from .document import GraphDocument
 from .registry import Registry, default_registry
 from .spec import NodeSpec, NodeType
@@ -85,7 +86,8 @@ class CompiledGraph:
         node_types = [registry.get(node.type) for node in document.nodes]
         pulls: list[list[tuple[str, int, str]]] = [[] for _ in document.nodes]
         exec_edges: list[dict[str, list[tuple[int, str]]]] = [{} for _ in document.nodes]
-        data_graph: dict[int, set[int]] = {i: set() for i in range(len(document.nodes))}   # data edges src -> dst
+        data_graph = nx.DiGraph()
+        data_graph.add_nodes_from(range(len(document.nodes)))
         for connection in document.connections:
             src, dst = index_of[connection.src_node], index_of[connection.dst_node]
             src_name, dst_name = connection.src_attr.split(":", 1)[1], connection.dst_attr.split(":", 1)[1]
@@ -93,9 +95,8 @@ class CompiledGraph:
                 exec_edges[src].setdefault(src_name, []).append((dst, dst_name))
             else:
                 pulls[dst].append((dst_name, src, src_name))
-                data_graph[src].add(dst)
+                data_graph.add_edge(src, dst)
         pure = [t.spec.is_pure for t in node_types]
-        upstream = predecessors_of(data_graph)
         self.is_pure = tuple(pure)
         self.nodes: tuple[CompiledNode, ...] = tuple(
             CompiledNode(
@@ -105,7 +106,7 @@ class CompiledGraph:
                 authored=tuple((name, node_types[i].spec.attribute(f"inputs:{name}").check(value))
                                for name, value in node.inputs.items()),
                 pulls=tuple(pulls[i]),
-                pure_schedule=_pure_schedule(data_graph, upstream, i, pure),
+                pure_schedule=_pure_schedule(data_graph, i, pure),
                 exec_targets=tuple((a.name, tuple(exec_edges[i].get(a.name, ()))) for a in node_types[i].spec.exec_outputs),
             )
             for i, node in enumerate(document.nodes)
@@ -123,7 +124,7 @@ class CompiledGraph:
             for n in self.nodes)
         # exec nodes each pure node depends on (through other pure nodes): their computes invalidate it
         self.pure_exec_dependencies = tuple(
-            tuple(sorted(j for j in reachable(upstream, i) - {i} if not pure[j])) if pure[i] else ()
+            tuple(sorted(j for j in nx.ancestors(data_graph, i) if not pure[j])) if pure[i] else ()
             for i in range(len(self.nodes)))
         self.index_of = index_of
         self.variable_types = {v.name: parse_type(v.type) for v in document.variables}
@@ -135,10 +136,19 @@ class CompiledGraph:
         return GraphInstance(self, world, **options)
 
 
-def _pure_schedule(data_graph: dict, upstream: dict, index: int, pure: list[bool]) -> tuple[int, ...]:
+def _pure_schedule(data_graph: nx.DiGraph, index: int, pure: list[bool]) -> tuple[int, ...]:
     """Pure nodes upstream of *index* (reached through pure nodes only), sources first."""
-    reached = reachable(upstream, index, pure.__getitem__)
-    return tuple(lexicographical_topological_sort(data_graph, reached)) if reached else ()
+    reached, frontier = set(), [index]
+    while frontier:
+        current = frontier.pop()
+        for upstream in data_graph.predecessors(current):
+            if pure[upstream] and upstream not in reached:
+                reached.add(upstream)
+                frontier.append(upstream)
+    if not reached:
+        return ()
+    order = nx.lexicographical_topological_sort(data_graph.subgraph(reached))
+    return tuple(order)
 
 
 class _Values:
