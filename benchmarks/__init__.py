@@ -1,8 +1,11 @@
 """graphflow benchmarks: what the runtime costs beyond physics, measured side by side.
 
 Machines are shared and noisy, so every figure is a ratio of graphflow to a
-baseline measured in the same run: repetitions of the two are interleaved (the
-order alternates every round) and medians are compared. Each benchmark module
+baseline measured in the same run: short repetitions of the two are
+interleaved (the order alternates every round), each round gives one ratio and
+the reported ratio is the median of those. In-process timings use the process
+CPU clock (``time.process_time``), so time spent descheduled by other
+processes on the machine does not count; wall-clock figures say so. Each benchmark module
 has ``run(quick: bool) -> str``; it may print detail lines and returns its final
 line, ``NAME: ratio=R.RR key=VALUEunit ...`` (ratio = graphflow / baseline,
 lower is better). ``python -m benchmarks [NAME] [--quick]`` runs them.
@@ -30,25 +33,33 @@ class Skip(Exception):
     """The benchmark cannot run here (a graph it needs is missing); the message says why."""
 
 
+clock = time.process_time
+
+
 def interleaved(candidates: dict[str, Callable[[], float | None]], rounds: int) -> dict[str, list[float]]:
     """Run every candidate once per round, alternating the order each round.
 
-    A candidate returns the seconds it measured itself, or None to be timed
-    whole. Returns the samples of every candidate.
+    A candidate returns the seconds it measured itself (with ``clock``), or
+    None to be timed whole. Returns the samples of every candidate.
     """
     samples: dict[str, list[float]] = {name: [] for name in candidates}
     names = list(candidates)
     for round_index in range(rounds):
         order = names if round_index % 2 == 0 else names[::-1]
         for name in order:
-            started = time.perf_counter()
+            started = clock()
             measured = candidates[name]()
-            samples[name].append(measured if measured is not None else time.perf_counter() - started)
+            samples[name].append(measured if measured is not None else clock() - started)
     return samples
 
 
 def median(values) -> float:
     return statistics.median(values)
+
+
+def paired_ratio(numerators: list[float], denominators: list[float]) -> float:
+    """Median of the per-round ratios: a burst of load hits both sides of one round alike."""
+    return statistics.median(a / b for a, b in zip(numerators, denominators))
 
 
 def line(name: str, ratio: float, **figures: str) -> str:
