@@ -19,6 +19,7 @@ from ..registry import Registry, default_registry
 GRAPH_TYPE = "OmniGraph"
 NODE_TYPE = "OmniGraphNode"
 UI_POSITION = "ui:nodegraph:node:pos"
+EXTENDED_VALUE = "omni:graph:attrValue"
 
 
 class ImportProblem(ValueError):
@@ -138,6 +139,9 @@ def _authored_inputs(prim, node_type, label: str, warnings: list[str]) -> dict:
                 inputs[attribute.name] = targets
             continue
         value = _value(prop)
+        if value is None:
+            # Kit stores extended ("any") inputs as a token plus the resolved value in customData
+            value = _plain(prop.GetCustomDataByKey(EXTENDED_VALUE))
         if value is not None and not prop.HasAuthoredConnections():
             inputs[attribute.name] = value
     return inputs
@@ -146,7 +150,7 @@ def _authored_inputs(prim, node_type, label: str, warnings: list[str]) -> dict:
 def _has_content(prop) -> bool:
     if hasattr(prop, "GetTargets"):
         return bool(prop.GetTargets())
-    return prop.HasAuthoredValue() or prop.HasAuthoredConnections()
+    return prop.HasAuthoredValue() or prop.HasAuthoredConnections() or prop.GetCustomDataByKey(EXTENDED_VALUE) is not None
 
 
 def _connections(node_prims, graph_path, kept: dict, label: str, warnings: list[str]) -> list[dict]:

@@ -153,7 +153,11 @@ def test_krabby_relative_connections_and_targets():
         ("OnPlaybackTick.outputs:tick", "ArticulationController.inputs:execIn"),
         ("JointNameArray.outputs:array", "ArticulationController.inputs:jointNames"),
         ("JointCommandArray.outputs:array", "ArticulationController.inputs:positionCommand")}
-    assert len(document.node("JointNameArray").inputs) >= 18
+    names = document.node("JointNameArray").inputs
+    commands = document.node("JointCommandArray").inputs
+    assert names["arraySize"] == 18 and names["input0"] == "FL_Body_Hip_RevoluteJoint"
+    assert commands["input0"] == 0.0, "an extended input's value comes from customData omni:graph:attrValue"
+    assert all(f"input{i}" in commands for i in range(18))
 
 
 def test_isaac_gantry_graph_resolves_list_op_residue():
