@@ -7,14 +7,17 @@ graph can be instanced many times side by side.
 
 Speed (see benchmarks/dispatch.py): everything a tick needs is resolved once.
 The compiled graph keeps, per node, its exec pin names, its exec fan-out as
-ready-made stack entries, and the pure nodes its pulls depend on. Each instance
-binds those tables to its own value dicts (the ``__dict__`` of every node's
-inputs / outputs bags, which live as long as the instance), so a tick is list
-indexing, dict stores of pulled values and compute calls: no name resolution,
-no spec walks, no tuples or lists built per node.
+ready-made stack entries, and a *pull program*: the pure nodes its data pulls
+depend on, in order, as one generated Python function of straight-line code
+(stale check, copy each input, compute; ``CompiledGraph.pull_source`` shows
+it). Each instance binds those to its own value dicts (the ``__dict__`` of
+every node's inputs / outputs bags, which live as long as the instance), so a
+tick is list indexing, dict stores of pulled values and compute calls: no name
+resolution, no spec walks, no tuples or lists built per node.
 """
 from __future__ import annotations
 
+import linecache
 import logging
 from collections import Counter, deque
 from dataclasses import dataclass
@@ -37,7 +40,6 @@ _ENABLED = ExecState.ENABLED
 _ENABLED_AND_PUSH = ExecState.ENABLED_AND_PUSH
 _LATENT_PUSH = ExecState.LATENT_PUSH
 _LATENT_FINISH = ExecState.LATENT_FINISH
-_NO_PULL = (None, None, None, None)
 
 
 class GraphRuntimeError(RuntimeError):
@@ -131,6 +133,55 @@ class CompiledGraph:
         self.variable_defaults = {v.name: (parse_type(v.type).coerce(v.default) if v.default is not None
                                            else parse_type(v.type).default_value()) for v in document.variables}
         self.step_budget = int(document.settings.get("stepBudget", DEFAULT_STEP_BUDGET))
+        # pure nodes are computed by their consumers' programs; theirs are made only if asked (compute_node)
+        self._pull_programs: dict[int, Any] = {
+            node.index: self._pull_program(node) for node in self.nodes if not self.is_pure[node.index]}
+
+    def pull_program(self, index: int):
+        """The compiled pull program of node *index* (None when it pulls no pure node)."""
+        if index not in self._pull_programs:
+            self._pull_programs[index] = self._pull_program(self.nodes[index])
+        return self._pull_programs[index]
+
+    def pull_source(self, node_name: str) -> str:
+        """The generated Python source of a node's pull program ('' when it pulls no pure node)."""
+        return self._pull_program_source(self.nodes[self.index_of[node_name]])
+
+    def _pull_program_source(self, node: CompiledNode) -> str:
+        """``pull(tick_epoch, epoch)``: compute the stale pure nodes upstream of *node*, sources first.
+
+        Straight-line code, one block per pure node: it is stale when it has not computed this tick
+        (its stamp is older than the tick's first epoch) or an exec node it depends on computed after
+        it; then it is stamped and counted, its inputs are copied from their sources, and it computes.
+        Globals (bound per instance): ``in<i>``/``out<i>`` node i's input/output dicts, ``compute<i>``,
+        ``db<i>``, the instance's ``stamps``, ``last`` (epoch of each exec node's latest compute) and
+        ``counts`` lists, ``failure`` and ``GraphRuntimeError``. Only indices and repr() of names
+        reach the source, so no text from a graph file can become code.
+        """
+        if not node.pure_schedule:
+            return ""
+        lines = [f"def pull(tick_epoch, epoch):  # pure nodes pulled by {node.name!r}", "    node = -1", "    try:"]
+        for i in node.pure_schedule:
+            pure_node = self.nodes[i]
+            stale = f"stamps[{i}] < tick_epoch" + "".join(
+                f" or last[{j}] > stamps[{i}]" for j in self.pure_exec_dependencies[i])
+            lines.append(f"        if {stale}:  # {pure_node.name!r}")
+            lines.append(f"            node = {i}; stamps[{i}] = epoch; counts[{i}] += 1")
+            lines.extend(f"            in{i}[{name!r}] = out{source}[{source_name!r}]"
+                         for name, source, source_name in pure_node.pulls)
+            lines.append(f"            compute{i}(db{i})")
+        lines += ["    except GraphRuntimeError:", "        raise", "    except Exception as error:",
+                  "        raise failure(node, error) from error", ""]
+        return "\n".join(lines)
+
+    def _pull_program(self, node: CompiledNode):
+        source = self._pull_program_source(node)
+        if not source:
+            return None
+        filename = f"<graphflow pulls of {node.name!r} in {self.document.source!r}>"
+        # tracebacks show the generated lines (one entry per graph source and node: bounded, never stale for long)
+        linecache.cache[filename] = (len(source), None, source.splitlines(True), filename)
+        return compile(source, filename, "exec")
 
     def instantiate(self, world: World | None = None, **options) -> "GraphInstance":
         return GraphInstance(self, world, **options)
@@ -257,12 +308,25 @@ class GraphInstance:
             tuple((self._input_dicts[node.index], name, self._output_dicts[source], source_name)
                   for name, source, source_name in node.pulls)
             for node in compiled.nodes)
-        # one step per pure node: (index, compute, database, first pull as four fields, the other pulls,
-        # exec nodes it depends on); most pure nodes pull one or two inputs, so the first is unrolled
-        steps = [(i, self._computes[i], databases[i], *(self._pulls[i][0] if self._pulls[i] else _NO_PULL),
-                  self._pulls[i][1:], compiled.pure_exec_dependencies[i])
-                 if compiled.is_pure[i] else None for i in range(len(compiled.nodes))]
-        self._pure_plans = tuple(tuple(steps[p] for p in node.pure_schedule) for node in compiled.nodes)
+        count = len(compiled.nodes)
+        self.compute_counts = [0] * count
+        self._last_exec_compute = [0] * count
+        self._pure_stamp = [-1] * count
+        namespace = {"stamps": self._pure_stamp, "last": self._last_exec_compute, "counts": self.compute_counts,
+                     "failure": self._failure, "GraphRuntimeError": GraphRuntimeError}
+        for i in range(count):
+            namespace.update({f"in{i}": self._input_dicts[i], f"out{i}": self._output_dicts[i],
+                              f"compute{i}": self._computes[i], f"db{i}": databases[i]})
+        self._namespace = namespace
+        self._pull_programs = [None if compiled.is_pure[i] else self._bind_pull(i) for i in range(count)]
+
+    def _bind_pull(self, index: int):
+        """Node *index*'s pull program as a function of this instance (None when it pulls no pure node)."""
+        code = self.compiled.pull_program(index)
+        if code is None:
+            return None
+        exec(code, self._namespace)   # compiled once per graph: this only makes a function bound to this instance
+        return self._namespace.pop("pull")
 
     # ---------------------------------------------------------------- state
     def reset(self) -> None:
@@ -271,7 +335,7 @@ class GraphInstance:
         self.tick_count = 0
         self.stop_requested = False
         self.events: deque[LogEvent] = deque(maxlen=KEPT_LOG_EVENTS)
-        self.compute_counts = [0] * count
+        self.compute_counts[:] = [0] * count          # in place: the pull programs hold these lists
         self.variables = dict(self.compiled.variable_defaults)
         self._latent: dict[int, None] = {}     # insertion-ordered set
         self._computes_this_tick = 0
@@ -281,8 +345,8 @@ class GraphInstance:
         self._exec_epoch = 0
         self._tick_epoch = 0
         self._epoch_tick = 0                   # the tick_count _tick_epoch belongs to
-        self._last_exec_compute = [0] * count
-        self._pure_stamp = [-1] * count
+        self._last_exec_compute[:] = [0] * count
+        self._pure_stamp[:] = [-1] * count
         for node, database in zip(self.compiled.nodes, self._databases):
             database.reset(node)
             if node.node_type.initialize is not None:
@@ -333,7 +397,7 @@ class GraphInstance:
         pop, push = stack.pop, stack.append
         computes, databases = self._computes, self._databases
         input_dicts, output_dicts, pulls = self._input_dicts, self._output_dicts, self._pulls
-        pure_plans, compute_pure = self._pure_plans, self._compute_pure
+        pull_programs = self._pull_programs
         exec_input_names, exec_output_names = compiled.exec_input_names, compiled.exec_output_names
         push_plans, self_entries = compiled.push_plans, compiled.plain_entries
         last_exec_compute, compute_counts, latent = self._last_exec_compute, self.compute_counts, self._latent
@@ -347,9 +411,9 @@ class GraphInstance:
                 if count > budget:
                     raise self._budget_error()
                 # pull: stale pure upstream nodes compute, then this node's data inputs are copied in
-                plan = pure_plans[index]
-                if plan:
-                    compute_pure(plan)
+                pull = pull_programs[index]
+                if pull is not None:
+                    pull(self._tick_epoch, self._exec_epoch)
                 for inputs, name, source, source_name in pulls[index]:
                     inputs[name] = source[source_name]
                 inputs, outputs = input_dicts[index], output_dicts[index]
@@ -402,9 +466,11 @@ class GraphInstance:
 
     def _compute(self, index: int, pins: tuple[str, ...]) -> None:
         """Compute an exec node: pull (computing stale pure upstream nodes), set exec pins, call compute."""
-        plan = self._pure_plans[index]
-        if plan:
-            self._compute_pure(plan)
+        pull = self._pull_programs[index]
+        if pull is None and self.compiled.is_pure[index]:   # a pure node computed on its own (test harness)
+            pull = self._pull_programs[index] = self._bind_pull(index)
+        if pull is not None:
+            pull(self._tick_epoch, self._exec_epoch)
         for inputs, name, source, source_name in self._pulls[index]:
             inputs[name] = source[source_name]
         inputs, outputs = self._input_dicts[index], self._output_dicts[index]
@@ -430,35 +496,6 @@ class GraphInstance:
         outputs = self._output_dicts[index]
         fired = [name for name in self.compiled.exec_output_names[index] if outputs[name] != _DISABLED]
         self.observer.on_compute(self.tick_count, self.compiled.nodes[index].name, fired, self._databases[index])
-
-    def _compute_pure(self, plan) -> None:
-        """Compute the stale pure nodes of a pull plan (sources first), each at most once per tick."""
-        stamps, last, counts = self._pure_stamp, self._last_exec_compute, self.compute_counts
-        tick_epoch, epoch = self._tick_epoch, self._exec_epoch
-        index = -1
-        try:
-            for index, compute, database, inputs, name, source, source_name, more, dependencies in plan:
-                stamp = stamps[index]
-                if stamp >= tick_epoch:             # computed this tick: fresh unless an exec dependency recomputed
-                    if not dependencies:
-                        continue
-                    for dependency in dependencies:
-                        if last[dependency] > stamp:
-                            break
-                    else:
-                        continue
-                if inputs is not None:
-                    inputs[name] = source[source_name]
-                    if more:
-                        for inputs, name, source, source_name in more:
-                            inputs[name] = source[source_name]
-                stamps[index] = epoch
-                counts[index] += 1
-                compute(database)
-        except GraphRuntimeError:
-            raise
-        except Exception as error:
-            raise self._failure(index, error) from error
 
     def _failure(self, index: int, error: Exception) -> GraphRuntimeError:
         node = self.compiled.nodes[index]
