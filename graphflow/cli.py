@@ -18,6 +18,7 @@ from pathlib import Path
 from . import __version__
 from .document import GraphError, load_document, parse_document, save_document
 from .executor import GraphRuntimeError, LogEvent
+from .gamepad import PadSpecError, attach_gamepad, scripted_pad
 from .keyboard import KeySpecError, attach_keyboard, scripted_keys
 from .registry import default_registry
 
@@ -133,7 +134,8 @@ def command_run(args) -> int:
         _check_recording(args, document)
     try:
         keys = scripted_keys(args.keys, args.key)
-    except KeySpecError as error:
+        pad = scripted_pad(args.gamepad, args.pad)
+    except (KeySpecError, PadSpecError) as error:
         raise BadInput(str(error)) from None
     try:
         simulation = Simulation(document, gui=args.gui, on_log=_print_log_event)
@@ -141,6 +143,8 @@ def command_run(args) -> int:
         raise BadInput(f"{args.graph}: {error}") from None
     if keys is not None:
         attach_keyboard(simulation.world, keys)
+    if pad is not None:
+        attach_gamepad(simulation.world, pad)
     seconds = args.seconds
     if args.ticks is None and seconds is None:
         seconds = document.settings.get("duration")
@@ -384,6 +388,12 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--key", action="append", default=[], metavar="KEY@TIME",
                      help="scripted key (repeatable): A@1.5 tap, A@1.5:down, A@1.5:up, Up@1.0-2.5 held; "
                           "replaces the PyBullet window's keys")
+    run.add_argument("--gamepad", metavar="FILE",
+                     help='scripted gamepad for OnGamepadInput / ReadGamepadState nodes: JSON '
+                          '{"gamepad": [{"element": "Right Stick Y Axis", "time": 1.0, "value": -1.0}, ...]}')
+    run.add_argument("--pad", action="append", default=[], metavar="ELEMENT=VALUE@TIME",
+                     help='scripted gamepad element (repeatable), held until changed: "Left Stick X Axis=0.5@1.0", '
+                          '"Face Button Bottom=1@3"; "1:..." for pad 1')
     run.add_argument("--log-level", default="warning", choices=["debug", "info", "warning", "error"],
                      help="Python logging level on stderr (default warning)")
     run.add_argument("--trace", metavar="FILE", help="write what happens every tick as JSON Lines (docs/trace.md)")
