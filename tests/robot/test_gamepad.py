@@ -138,3 +138,37 @@ def test_kit_element_tokens_are_the_allowed_tokens():
     assert len(ELEMENTS) == 20
     with pytest.raises(Exception, match="inputs:gamepadElementIn"):
         NodeHarness("omni.graph.action.OnGamepadInput", inputs={"gamepadElementIn": "Left Stick X Axis"})
+
+
+STICK_LABEL_GRAPH = {
+    "format": "graphflow", "formatVersion": [1, 0],
+    "settings": {"timeStep": 0.25, "duration": 1.5},
+    "nodes": [
+        {"name": "tick", "type": "omni.graph.action.OnTick"},
+        {"name": "button", "type": "omni.graph.action.OnGamepadInput"},
+        {"name": "stick", "type": "omni.graph.nodes.ReadGamepadState", "inputs": {"gamepadElement": "Right Stick Y Axis"}},
+        {"name": "text", "type": "graphflow.FormatText", "inputs": {"format": "stick {value}"}},
+        {"name": "draw", "type": "omni.graph.visualization.nodes.DrawScreenSpaceText"},
+        {"name": "print", "type": "omni.graph.ui_nodes.PrintText", "inputs": {"text": "button"}},
+    ],
+    "connections": [
+        {"src": "tick.outputs:tick", "dst": "draw.inputs:execIn"},
+        {"src": "stick.outputs:value", "dst": "text.inputs:value"},
+        {"src": "text.outputs:text", "dst": "draw.inputs:text"},
+        {"src": "button.outputs:pressed", "dst": "print.inputs:execIn"},
+    ],
+}
+
+
+def test_cli_gamepad_file_and_pad_flags(tmp_path, capsys):
+    from graphflow.cli import main
+
+    graph = tmp_path / "stick.json"
+    graph.write_text(json.dumps(STICK_LABEL_GRAPH))
+    pad_file = tmp_path / "pad.json"
+    pad_file.write_text(json.dumps({"gamepad": [{"element": "Right Stick Y Axis", "time": 0.5, "value": -1.0}]}))
+    assert main(["run", str(graph), "--gamepad", str(pad_file), "--pad", "Face Button Bottom=1@0.75",
+                 "--pad", "Right Stick Y Axis=0.5@1.0"]) == 0
+    assert capsys.readouterr().out.splitlines() == ["stick 0.0", "stick -1.0", "button", "stick 0.5"]
+    assert main(["run", str(graph), "--pad", "Face Button Bottom@1"]) == 2
+    assert "expected ELEMENT=VALUE@TIME" in capsys.readouterr().err
