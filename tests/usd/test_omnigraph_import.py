@@ -161,12 +161,29 @@ def test_krabby_relative_connections_and_targets():
 
 
 def test_isaac_gantry_graph_resolves_list_op_residue():
-    result = import_graph(_sample("isaacsim_SurfaceGripper_gantry.usda"), skip_unknown=True)
+    result = import_graph(_sample("isaacsim_SurfaceGripper_gantry.usda"))      # every node type is known
     pairs = {(c.src, c.dst) for c in result.document.connections}
     # Kit left `delete ... = add.outputs:sum` and `prepend ... = maximum.outputs:maximum`
     assert ("maximum.outputs:maximum", "write_prim_attribute.inputs:value") in pairs
     assert ("add.outputs:sum", "write_prim_attribute.inputs:value") not in pairs
     assert ("on_tick.outputs:tick", "write_prim_attribute.inputs:execIn") in pairs
     assert ("constant_float_01.outputs:value", "multiply_01.inputs:b") in pairs
-    skipped = {w.split("'")[1] for w in result.warnings if w.endswith("skipped")}
-    assert {"on_gamepad_input", "read_gamepad_state", "draw_screen_space_text_beta_"} <= skipped
+    assert len(result.document.nodes) == 36 and not any("skipped" in w for w in result.warnings)
+
+
+def test_isaac_gantry_gamepad_nodes_import_with_their_inputs():
+    document = import_graph(_sample("isaacsim_SurfaceGripper_gantry.usda")).document
+    pairs = {(c.src, c.dst) for c in document.connections}
+    assert ("on_gamepad_input.outputs:pressed", "surface_gripper.inputs:Toggle") in pairs
+    assert ("read_gamepad_state_02.outputs:value", "multiply_01.inputs:a") in pairs
+    assert ("read_gamepad_state.outputs:value", "multiply_03.inputs:a") in pairs
+    assert ("read_gamepad_state_03.outputs:value", "multiply_04.inputs:b") in pairs
+    elements = {node.name: node.inputs.get("gamepadElement") for node in document.nodes
+                if node.type == "omni.graph.nodes.ReadGamepadState"}
+    assert elements == {"read_gamepad_state": "Right Stick Y Axis", "read_gamepad_state_01": "Left Stick X Axis",
+                        "read_gamepad_state_02": "Left Stick Y Axis", "read_gamepad_state_03": "Right Shoulder"}
+    gamepad_button = document.node("on_gamepad_input")
+    assert gamepad_button.type_version == 2 and gamepad_button.inputs == {}     # Kit's default: Face Button Bottom
+    text = document.node("draw_screen_space_text_beta_").inputs
+    assert text["position"] == pytest.approx([51.1, 92.2])
+    assert text["text"].startswith("Use Gamepad to control Gantry")
