@@ -372,15 +372,17 @@ class GraphInstance:
     def tick(self) -> None:
         """Evaluate one tick: event sources, then latent continuations, draining the exec stack."""
         self.tick_count += 1
-        self._start_tick_epoch()
+        self._exec_epoch += 1                  # _start_tick_epoch(), written out
+        self._tick_epoch = self._exec_epoch
+        self._epoch_tick = self.tick_count
         self._computes_this_tick = 0
-        entries = self.compiled.plain_entries
-        latent_before = list(self._latent) if self._latent else ()
+        entries, run_from, latent = self.compiled.plain_entries, self._run_from, self._latent
+        latent_before = list(latent) if latent else ()
         for index in self.compiled.event_sources:
-            self._run_from(entries[index])
+            run_from(entries[index])
         for index in latent_before:
-            if index in self._latent:
-                self._run_from(entries[index])
+            if index in latent:
+                run_from(entries[index])
 
     def _start_tick_epoch(self) -> None:
         self._exec_epoch += 1

@@ -69,14 +69,16 @@ class Simulation:
         if seconds is not None:
             by_time = math.ceil(seconds / self.world.time_step - 1e-9)
             limit = by_time if limit is None else min(limit, by_time)
+        step, instances = self.step, self.instances
         count = 0
         while limit is None or count < limit:
-            self.step()
+            step()
             count += 1
             if progress is not None:
                 progress(count, limit)
-            if any(instance.stop_requested for instance in self.instances):
-                return RunResult(count, self.world.time, True)
+            for instance in instances:
+                if instance.stop_requested:
+                    return RunResult(count, self.world.time, True)
         return RunResult(count, self.world.time, False)
 
     def reset(self) -> None:
