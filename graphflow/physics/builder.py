@@ -6,9 +6,13 @@ Mapping (documented in ``graphflow.physics``):
   frame is the prim frame; static colliders and kinematic bodies get mass 0;
 * every articulation is one multibody (``createMultiBody`` with link arrays):
   the body fixed to the world by a fixed joint is the (mass 0) base, a body
-  free in space makes a floating base, a movable joint to the world gets a
-  massless anchor base; each link frame is its joint frame, so USD joint
-  coordinates equal PyBullet's (times -1 when the tree runs body1 -> body0);
+  free in space makes a floating base (usd-core's root body, e.g. the
+  krabby's chassis, else the centre of the joint graph), a movable joint to
+  the world gets a massless anchor base; the tree is walked from the base
+  depth first, the order in which PyBullet numbers createMultiBody links (a
+  breadth-first walk misplaced every branch after the first); each link
+  frame is its joint frame, so USD joint coordinates equal PyBullet's (times
+  -1 when the tree runs body1 -> body0);
 * joints outside articulations become constraints (fixed, prismatic, point to
   point; revolute as two point-to-point constraints on the axis);
 * D6 joints with ``excludeFromArticulation`` are not built: they are the
@@ -257,31 +261,35 @@ class SceneBuilder:
                 self._unsupported(extra.path, "a second joint to the world in one articulation (closed loop)")
                 joints.remove(extra)
         else:
-            root_body = articulation.path if articulation.path in members else sorted(members)[0]
+            root_body = _floating_root(articulation, members, joints)
 
-        # walk the tree from the root: (child body, joint, parent body or None, child is body1)
+        # walk the tree from the root, depth first: (child body, joint, parent body or None, child is body1).
+        # PyBullet numbers the links of createMultiBody depth first (pre-order, children in array order),
+        # whatever the order of the arrays, so the arrays are written in that order and link i is entry i.
         order: list[tuple[str, Joint, str | None, bool]] = []
         visited = {root_body} if root_body else set()
-        frontier: list[str | None] = [root_body] if root_body else [None]
+        start: str | None = root_body
         if anchor_joint is not None and root_body is None:
             child = anchor_joint.body1 if anchor_joint.body0 is None else anchor_joint.body0
             order.append((child, anchor_joint, None, anchor_joint.body1 == child))
             visited.add(child)
-            frontier = [child]
+            start = child
         remaining = [j for j in joints if j is not anchor_joint]
-        while frontier:
-            parent = frontier.pop(0)
-            for joint in list(remaining):
-                if parent not in (joint.body0, joint.body1):
-                    continue
-                child = joint.body1 if joint.body0 == parent else joint.body0
-                remaining.remove(joint)
-                if child in visited or child is None:
-                    self._unsupported(joint.path, "a joint closing a loop in an articulation")
-                    continue
-                visited.add(child)
-                order.append((child, joint, parent, joint.body1 == child))
-                frontier.append(child)
+        stack: list[str] = [start] if start is not None else []
+        while stack:
+            parent = stack[-1]
+            joint = next((j for j in remaining if parent in (j.body0, j.body1)), None)
+            if joint is None:
+                stack.pop()
+                continue
+            remaining.remove(joint)
+            child = joint.body1 if joint.body0 == parent else joint.body0
+            if child in visited or child is None:
+                self._unsupported(joint.path, "a joint closing a loop in an articulation")
+                continue
+            visited.add(child)
+            order.append((child, joint, parent, joint.body1 == child))
+            stack.append(child)
         for joint in remaining:
             self._unsupported(joint.path, "a joint not connected to its articulation's root")
 
@@ -417,6 +425,37 @@ class SceneBuilder:
         if not joint.collision_enabled and child_id != -1:
             p.setCollisionFilterPair(parent_id, child_id, parent_link, child_link, 0)
         self.scene.constraints[joint.path] = ids
+
+
+def _floating_root(articulation, members: list[str], joints: list[Joint]) -> str:
+    """The base body of an articulation free in space.
+
+    usd-core's root prim when it is a body of the articulation (the ArticulationRootAPI body, or for an
+    API on an ancestor the body it picks: the krabby's chassis); otherwise the centre of the joint graph
+    (the body with the smallest largest hop count to any other body), ties broken by path.
+    """
+    for root in articulation.roots:
+        if root in members:
+            return root
+    if articulation.path in members:
+        return articulation.path
+    neighbours: dict[str, list[str]] = {body: [] for body in members}
+    for joint in joints:
+        if joint.body0 in neighbours and joint.body1 in neighbours:
+            neighbours[joint.body0].append(joint.body1)
+            neighbours[joint.body1].append(joint.body0)
+
+    def eccentricity(body: str) -> int:
+        hops, frontier = {body: 0}, [body]
+        while frontier:
+            current = frontier.pop(0)
+            for other in neighbours[current]:
+                if other not in hops:
+                    hops[other] = hops[current] + 1
+                    frontier.append(other)
+        return max(hops.values())
+
+    return min(sorted(members), key=eccentricity)
 
 
 def _cone_points(shape: Shape):

@@ -135,6 +135,7 @@ class Articulation:
     bodies: list[str]
     joints: list[str]
     self_collision: bool = False
+    roots: list[str] = field(default_factory=list)   # usd-core's root prims: a body, or the joint to the world
 
 
 @dataclass(frozen=True)

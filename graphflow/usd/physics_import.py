@@ -422,8 +422,9 @@ class _Importer:
             bodies = [str(b) for b in desc.articulatedBodies if str(b)]
             prim = self.stage.GetPrimAtPath(path)
             self_collision = bool(self._attribute(prim, "physxArticulation:enabledSelfCollisions", False))
+            roots = sorted(str(r) for r in desc.rootPrims if str(r))
             self.description.articulations.append(Articulation(path=path, bodies=bodies, joints=joints,
-                                                               self_collision=self_collision))
+                                                               self_collision=self_collision, roots=roots))
 
     def _surface_grippers(self):
         from pxr import Usd
