@@ -22,6 +22,7 @@ from .builder import ArticulationHandle, BodyHandle, BuiltScene, SceneBuilder
 
 DEFAULT_TIME_STEP = 1.0 / 60.0      # Isaac Sim's default physics rate
 SOLVER_ITERATIONS = 50              # PyBullet's default, stated so it stays fixed
+MOTOR_MAX_FORCE = 1.0e9             # N or N m: a floating-base drive without a force limit
 
 
 class RayHit(NamedTuple):
@@ -168,7 +169,9 @@ class PyBulletWorld:
     def _apply_pre_step_forces(self, dt: float):
         client = self.client
         for articulation in self.scene.articulations.values():
-            if any(d is not None for d in articulation.drives) or any(articulation.efforts):
+            if not articulation.fixed_base:
+                self._drive_floating(articulation, dt)
+            elif any(d is not None for d in articulation.drives) or any(articulation.efforts):
                 client.setJointMotorControlArray(articulation.body_id, list(articulation.joint_indices),
                                                  pybullet.TORQUE_CONTROL,
                                                  forces=self._drive_efforts(articulation, dt))
@@ -236,6 +239,46 @@ class PyBulletWorld:
                 effort = max(-drive.max_force, min(drive.max_force, effort))
             result.append(signs[dof] * effort)
         return result
+
+    def _drive_floating(self, articulation: ArticulationHandle, dt: float):
+        """Drives of a floating-base articulation: PyBullet joint motors, solved with the contacts.
+
+        A legged robot stands on its drives: the load on a leg is the ground's reaction, which
+        only the constraint solver knows, in the same step. The torque drive of
+        ``_drive_efforts`` cannot include it: it holds a static load L with k M / (M + D)
+        instead of k, and for light legs under stiff gains (the krabby: M ~ 0.1 kg m^2,
+        D ~ 6e4) the legs folded by 0.35 rad. Here each drive is PhysX's implicit drive
+        f = k (q* - q - dt v') + d (v* - v') taken in its stiff limit: a velocity motor with
+        target v' = (k (q* - q) + d v*) / (dt k + d) (the velocity at which f = 0; max velocity
+        clamps it) and the drive's max force, solved with the contacts. Both drive types have
+        this target. It is exact as long as the drive is stiff for the link (dt (dt k + d) >> M,
+        i.e. D >> M); a soft drive is then rigid against loads, where PhysX would give way by L / k.
+        Feed-forward efforts are added as joint torques.
+        """
+        client = self.client
+        signs = articulation.signs
+        states = client.getJointStates(articulation.body_id, list(articulation.joint_indices))
+        indices, velocities, forces = [], [], []
+        for dof, drive in enumerate(articulation.drives):
+            if drive is None:
+                continue
+            k, d = drive.stiffness, drive.damping
+            if not dt * k + d > 0.0:
+                continue
+            error = min(max(drive.target_position, drive.lower), drive.upper) - signs[dof] * states[dof][0]
+            velocity = (k * error + d * drive.target_velocity) / (dt * k + d)
+            if drive.max_velocity is not None:
+                velocity = max(-drive.max_velocity, min(drive.max_velocity, velocity))
+            indices.append(articulation.joint_indices[dof])
+            velocities.append(signs[dof] * velocity)
+            forces.append(min(drive.max_force, MOTOR_MAX_FORCE))
+        if indices:
+            client.setJointMotorControlArray(articulation.body_id, indices, pybullet.VELOCITY_CONTROL,
+                                             targetVelocities=velocities, forces=forces)
+        if any(articulation.efforts):
+            client.setJointMotorControlArray(articulation.body_id, list(articulation.joint_indices),
+                                             pybullet.TORQUE_CONTROL,
+                                             forces=[sign * effort for sign, effort in zip(signs, articulation.efforts)])
 
     def _joint_inertia(self, articulation: ArticulationHandle, positions: list[float]) -> np.ndarray:
         """The joint-space inertia matrix of the articulation's DOFs (PyBullet coordinates)."""

@@ -3,7 +3,7 @@ import math
 from pathlib import Path
 
 import pytest
-from pxr import Gf, Usd, UsdGeom, UsdPhysics
+from pxr import Gf, Usd, UsdGeom, UsdPhysics, UsdShade
 
 from graphflow.physics import create_world
 from graphflow.usd.transforms import compose, quat_from_axis_angle, relative
@@ -23,10 +23,17 @@ def make_stage():
     return stage
 
 
-def add_ground(stage):
+def add_ground(stage, friction=None):
     plane = UsdGeom.Plane.Define(stage, "/World/Ground")
     plane.CreateAxisAttr("Z")
     UsdPhysics.CollisionAPI.Apply(plane.GetPrim())
+    if friction is not None:
+        material = UsdShade.Material.Define(stage, "/World/GroundMaterial")
+        api = UsdPhysics.MaterialAPI.Apply(material.GetPrim())
+        api.CreateStaticFrictionAttr(friction)
+        api.CreateDynamicFrictionAttr(friction)
+        UsdShade.MaterialBindingAPI.Apply(plane.GetPrim()).Bind(material, UsdShade.Tokens.weakerThanDescendants,
+                                                                "physics")
 
 
 def add_box(stage, path, pose, half_extents, mass, center_of_mass=None):
@@ -178,3 +185,82 @@ def test_branching_tree_drives_reach_their_targets_inside_the_limits():
         assert distance(world.prim_pose("/Robot/CarriageB")[0], (-0.3, 0.4, 1.2)) < 1e-4
         # the base is welded: it has not moved
         assert distance(world.prim_pose("/Robot/Base")[0], (0.0, 0.0, 1.0)) < 1e-9
+
+
+# a table standing on four splayed, hinged legs: a floating base (nothing welds it to the world). Like
+# the krabby's, its legs are light for their stiff drives and the table's weight loads the hinges: on
+# an icy floor (friction 0.05) the feet cannot hold each other the way a stepladder's do.
+TABLE_TOP = (0.3, 0.2, 0.025)                   # half extents, m
+LEG = (0.02, 0.02, 0.15)
+SPLAY = math.radians(25.0)
+HINGE_HEIGHT = 0.01 + 2 * LEG[2] * math.cos(SPLAY) + LEG[0] * math.sin(SPLAY)   # feet 1 cm above the ground
+TABLE_HEIGHT = HINGE_HEIGHT + TABLE_TOP[2]
+CORNERS = {"FL": (0.25, 0.15), "FR": (0.25, -0.15), "RL": (-0.25, 0.15), "RR": (-0.25, -0.15)}
+
+
+def table_stage():
+    stage = make_stage()
+    add_ground(stage, friction=0.05)
+    UsdPhysics.ArticulationRootAPI.Apply(UsdGeom.Xform.Define(stage, "/Table").GetPrim())
+    top = ((0.0, 0.0, TABLE_HEIGHT), IDENTITY)
+    add_box(stage, "/Table/Top", top, TABLE_TOP, 20.0)
+    poses = {"/Table/Top": (top, TABLE_TOP)}
+    for name, (x, y) in CORNERS.items():
+        outward = math.copysign(1.0, x)
+        tilt = quat_from_axis_angle((0.0, 1.0, 0.0), -outward * SPLAY)      # the foot points away from the top
+        centre = (x + outward * LEG[2] * math.sin(SPLAY), y, HINGE_HEIGHT - LEG[2] * math.cos(SPLAY))
+        add_box(stage, f"/Table/{name}", (centre, tilt), LEG, 1.0)
+        poses[f"/Table/{name}"] = ((centre, tilt), LEG)
+        add_joint(stage, f"/Table/Joints/{name}", "revolute", "/Table/Top", f"/Table/{name}",
+                  ((x, y, HINGE_HEIGHT), IDENTITY), poses, axis="Y", limits=(-45.0, 45.0),
+                  drive=(1.0e4, 1.0e3, 0.0))
+    return stage
+
+
+def test_a_table_on_driven_legs_stands_where_it_was_put():
+    with create_world(table_stage()) as world:
+        assert not world.scene.articulations["/Table"].fixed_base
+        assert world.body_link("/Table/Top")[1] == -1                    # the top is the floating base
+        start = world.prim_pose("/Table/Top")[0]
+        assert distance(start, (0.0, 0.0, TABLE_HEIGHT)) < 1e-6
+        for _ in range(120):
+            world.step()
+        end = world.prim_pose("/Table/Top")[0]
+        assert math.hypot(end[0] - start[0], end[1] - start[1]) < 1e-3   # no drifting away (limit 0.1 m)
+        assert end[2] == pytest.approx(TABLE_HEIGHT - 0.01, abs=1e-3)    # dropped 1 cm onto its feet (torque drives: 17 cm)
+        assert max(abs(q) for q in world.joint_positions("/Table")) < 1e-3    # 1.1e-4 rad (torque drives: 0.79)
+        assert_bodies_follow_the_joints(world, "/Table", tolerance=1e-5)
+
+
+def test_a_floating_tree_resets_bit_for_bit():
+    with create_world(table_stage()) as world:
+        def run():
+            trace = []
+            for _ in range(60):
+                world.step()
+                trace.append((world.prim_pose("/Table/Top"), world.joint_positions("/Table")))
+            return trace
+        first = run()
+        world.reset()
+        assert run() == first
+
+
+def test_the_krabby_hexapod_stands_on_its_drives():
+    """Isaac-authored hexapod: root /krabby (an Xform), 25 bodies, 18 driven revolute joints, 6 fixed feet.
+
+    The feet start 0.18 m above the ground (the fixed joints put each footpad 0.31 m below where it
+    is authored), so the crab drops onto them and stands: 0.187 m is the largest displacement
+    (a footpad), the drives end within 0.012 rad (the knees; hips within 0.002).
+    """
+    if not KRABBY.is_file():
+        pytest.skip(f"{KRABBY} is not available")
+    from graphflow.physics.inspect import simulate_report
+
+    report = simulate_report(str(KRABBY), 2.0)
+    assert len(report["displacements"]) == 25 and len(report["drive_errors"]) == 18
+    assert max(report["displacements"].values()) < 0.2                     # 14.8 m before the fix
+    assert report["displacements"]["/krabby/chassis/body"] == pytest.approx(0.181, abs=0.01)
+    assert max(report["drive_errors"].values()) < 0.02                     # 3.17 rad before the fix
+    with create_world(KRABBY) as world:
+        assert world.body_link("/krabby/chassis/body")[1] == -1             # the chassis is the floating base
+        assert not world.scene.articulations["/krabby"].fixed_base
