@@ -332,8 +332,32 @@ class _Importer:
         if mass <= 0.0:
             self._unsupported(str(prim.GetPath()), "a rigid body without mass or colliders (given 1 kg)")
             mass, diagonal = 1.0, (1e-3, 1e-3, 1e-3)
+        elif not any(shape.collision_enabled for shape in body.shapes) and not (
+                prim.HasAPI(UsdPhysics.MassAPI) and mass_api.GetDiagonalInertiaAttr().HasAuthoredValue()):
+            # usd-core found no collider to integrate: it warns "possibly invalid inertia tensor of
+            # {1,1,1}", uses a small sphere's inertia and leaves the principal axes uninitialised (they
+            # changed from run to run, and so did the simulation). Use the body's own geometry instead.
+            diagonal, principal_axes = _geometry_inertia(self._fallback_shapes(prim, body), mass,
+                                                         self._vec(center), diagonal)
         return MassProperties(mass=mass, center_of_mass=self._vec(center), diagonal_inertia=diagonal,
                               principal_axes=principal_axes)
+
+    def _fallback_shapes(self, prim, body: Body) -> list[Shape]:
+        """Shapes to take a body's inertia from when it has no enabled collider: its disabled
+        colliders, else its own Cube or Sphere geometry (the krabby's tibias)."""
+        from pxr import Gf, UsdGeom
+
+        if body.shapes:
+            return list(body.shapes)
+        scale = Gf.Transform(Gf.Matrix4d(self.xform_cache.GetLocalToWorldTransform(prim))).GetScale()
+        scale = tuple(abs(float(c)) * self.mpu for c in scale)
+        common = dict(path=str(prim.GetPath()), pose=((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)))
+        if prim.IsA(UsdGeom.Cube):
+            half = 0.5 * float(UsdGeom.Cube(prim).GetSizeAttr().Get())
+            return [Shape(kind="box", half_extents=tuple(half * c for c in scale), **common)]
+        if prim.IsA(UsdGeom.Sphere) and scale[0] == scale[1] == scale[2]:
+            return [Shape(kind="sphere", radius=float(UsdGeom.Sphere(prim).GetRadiusAttr().Get()) * scale[0], **common)]
+        return []
 
     # -- joints --------------------------------------------------------------------
     def _joint_body(self, joint_path: str, which: str, body_path, relationship_target, local_pose: Pose):
@@ -478,6 +502,30 @@ def _unit_density_properties(shape: Shape):
     volume = 8.0 * half[0] * half[1] * half[2]
     return volume, (volume * (half[1] ** 2 + half[2] ** 2) / 3.0, volume * (half[0] ** 2 + half[2] ** 2) / 3.0,
                     volume * (half[0] ** 2 + half[1] ** 2) / 3.0), center
+
+
+def _geometry_inertia(shapes: list[Shape], mass: float, center_of_mass, fallback_diagonal):
+    """(principal inertia, principal axes as xyzw) of *mass* spread evenly over *shapes* (body frame),
+    about *center_of_mass*; a small sphere's inertia on identity axes when there are no shapes."""
+    import numpy as np
+    from pxr import Gf
+
+    parts = [(shape, *_unit_density_properties(shape)) for shape in shapes]
+    total = sum(volume for _shape, volume, _inertia, _center in parts)
+    if not total > 0.0:
+        return tuple(fallback_diagonal), (0.0, 0.0, 0.0, 1.0)
+    tensor = np.zeros((3, 3))
+    for shape, volume, inertia, center in parts:
+        share = mass * volume / total
+        rotation = np.array(Gf.Matrix3d(Gf.Rotation(Gf.Quatd(shape.pose[1][3], *shape.pose[1][:3]))).GetTranspose())
+        offset = np.array(shape.pose[0]) + rotation @ np.array(center) - np.array(center_of_mass)
+        tensor += rotation @ np.diag(np.array(inertia) * share / volume) @ rotation.T
+        tensor += share * (offset @ offset * np.eye(3) - np.outer(offset, offset))
+    values, vectors = np.linalg.eigh(tensor)
+    if np.linalg.det(vectors) < 0:
+        vectors[:, 2] = -vectors[:, 2]
+    quat = Gf.Matrix3d(*vectors.T.flatten().tolist()).ExtractRotation().GetQuat()
+    return tuple(float(v) for v in values), _quat(quat)
 
 
 def joint_frame_offset(joint: Joint, pose0_world: Pose, pose1_world: Pose) -> float:

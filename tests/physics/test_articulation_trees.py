@@ -250,7 +250,7 @@ def test_the_krabby_hexapod_stands_on_its_drives():
 
     The feet start 0.18 m above the ground (the fixed joints put each footpad 0.31 m below where it
     is authored), so the crab drops onto them and stands: 0.187 m is the largest displacement
-    (a footpad), the drives end within 0.012 rad (the knees; hips within 0.002).
+    (a footpad), the drives end within 0.0103 rad (the knees; hips within 0.002).
     """
     if not KRABBY.is_file():
         pytest.skip(f"{KRABBY} is not available")

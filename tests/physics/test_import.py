@@ -256,3 +256,30 @@ def test_a_joint_whose_body_is_missing_names_file_and_prims(tmp_path):
     stage.GetRootLayer().Export(str(path))
     with pytest.raises(StageError, match=r"broken\.usda: joint /World/Hinge: body0 </World/Gone> does not exist"):
         create_world(path)
+
+
+def test_a_body_without_enabled_colliders_gets_its_geometry_inertia():
+    """usd-core warns "possibly invalid inertia tensor of {1,1,1}" for these, uses a small sphere and leaves
+    the principal axes uninitialised (different in every process: the krabby's femurs and tibias)."""
+    stage = make_stage()
+    femur = add_body(stage, "/World/Femur", position=(0, 0, 1), scale=(0.02, 0.45, 0.05), mass=2.8, size=1.0)
+    femur.GetAttribute("physics:collisionEnabled").Set(False)
+    tibia = UsdGeom.Cube.Define(stage, "/World/Tibia")            # a rigid body with no collider at all
+    tibia.CreateSizeAttr(1.0)
+    tibia.AddScaleOp().Set(Gf.Vec3d(0.02, 0.051, 0.8128))
+    UsdPhysics.RigidBodyAPI.Apply(tibia.GetPrim())
+    UsdPhysics.MassAPI.Apply(tibia.GetPrim()).CreateMassAttr(0.72)
+    bodies = load_description(stage).bodies
+
+    def box(mass, x, y, z):           # full edge lengths
+        return [mass * (y * y + z * z) / 12, mass * (x * x + z * z) / 12, mass * (x * x + y * y) / 12]
+
+    for path, mass, size in (("/World/Femur", 2.8, (0.02, 0.45, 0.05)), ("/World/Tibia", 0.72, (0.02, 0.051, 0.8128))):
+        properties = bodies[path].mass
+        assert properties.mass == pytest.approx(mass)
+        assert sorted(properties.diagonal_inertia) == pytest.approx(sorted(box(mass, *size)), rel=1e-6)
+        # the principal axes carry each principal moment onto the body axis it belongs to
+        from graphflow.usd.transforms import quat_rotate
+        for moment, axis in zip(properties.diagonal_inertia, ((1, 0, 0), (0, 1, 0), (0, 0, 1))):
+            direction = [abs(c) for c in quat_rotate(properties.principal_axes, axis)]
+            assert moment == pytest.approx(box(mass, *size)[direction.index(max(direction))], rel=1e-6)
