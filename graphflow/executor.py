@@ -84,6 +84,7 @@ class CompiledGraph:
     def __init__(self, document: GraphDocument, registry: Registry | None = None):
         registry = registry or default_registry()
         self.document = document
+        self.registry = registry
         index_of = {node.name: i for i, node in enumerate(document.nodes)}
         node_types = [registry.get(node.type) for node in document.nodes]
         pulls: list[list[tuple[str, int, str]]] = [[] for _ in document.nodes]
@@ -133,6 +134,8 @@ class CompiledGraph:
         self.variable_defaults = {v.name: (parse_type(v.type).coerce(v.default) if v.default is not None
                                            else parse_type(v.type).default_value()) for v in document.variables}
         self.step_budget = int(document.settings.get("stepBudget", DEFAULT_STEP_BUDGET))
+        # the names pull programs use for node i's input dict, output dict, compute and database
+        self.program_names = tuple((f"in{i}", f"out{i}", f"compute{i}", f"db{i}") for i in range(len(self.nodes)))
         # pure nodes are computed by their consumers' programs; theirs are made only if asked (compute_node)
         self._pull_programs: dict[int, Any] = {
             node.index: self._pull_program(node) for node in self.nodes if not self.is_pure[node.index]}
@@ -314,9 +317,9 @@ class GraphInstance:
         self._pure_stamp = [-1] * count
         namespace = {"stamps": self._pure_stamp, "last": self._last_exec_compute, "counts": self.compute_counts,
                      "failure": self._failure, "GraphRuntimeError": GraphRuntimeError}
-        for i in range(count):
-            namespace.update({f"in{i}": self._input_dicts[i], f"out{i}": self._output_dicts[i],
-                              f"compute{i}": self._computes[i], f"db{i}": databases[i]})
+        for i, (in_name, out_name, compute_name, db_name) in enumerate(compiled.program_names):
+            namespace[in_name], namespace[out_name] = self._input_dicts[i], self._output_dicts[i]
+            namespace[compute_name], namespace[db_name] = self._computes[i], databases[i]
         self._namespace = namespace
         self._pull_programs = [None if compiled.is_pure[i] else self._bind_pull(i) for i in range(count)]
 
