@@ -111,3 +111,13 @@ def test_stage_graph_stdout_holds_only_the_graph_lines(tmp_path):
     result = graphflow("run", str(graph), "--ticks", "2")
     assert result.returncode == 0, result.stderr
     assert result.stdout == "hello\nhello\n"
+    assert "pybullet build time" not in result.stderr
+
+
+def test_missing_stage_is_one_line_on_stderr(tmp_path):
+    graph = tmp_path / "lost.json"
+    graph.write_text(json.dumps({"format": "graphflow", "formatVersion": [1, 0], "settings": {"stage": "nope.usda"},
+                                 "nodes": [{"name": "tick", "type": "omni.graph.action.OnTick"}]}))
+    result = graphflow("run", str(graph))
+    assert result.returncode == 2
+    assert result.stderr.splitlines() == [f"graphflow: error: {graph}: {tmp_path / 'nope.usda'}: no such stage file"]

@@ -79,10 +79,10 @@ from __future__ import annotations
 from graphflow.usd.errors import StageError, UnsupportedPrimWarning
 
 from .assets import asset_path, resolve_stage
-from .native_output import native_stdout_silenced
+from .native_output import native_output_silenced
 
-with native_stdout_silenced():
-    import pybullet  # noqa: F401  (imported here once so its banner never reaches stdout)
+with native_output_silenced(1, 2):
+    import pybullet  # noqa: F401  (imported here once so its build banner never reaches the output)
 
 __all__ = ["create_world", "StageError", "UnsupportedPrimWarning", "asset_path", "resolve_stage",
            "PyBulletWorld", "RayHit", "Contact", "ATTRIBUTES"]

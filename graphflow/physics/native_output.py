@@ -1,8 +1,9 @@
-"""Keep PyBullet's native banner lines ('pybullet build time ...', 'argv[0]=') off stdout.
+"""Keep PyBullet's native banner lines ('pybullet build time ...', 'argv[0]=') out of the output.
 
 The C library prints them with printf when the module is imported and when a
 client connects; stdout belongs to the graph's own log lines (and to pipes
-such as ``graphflow run ... | grep``), so they are sent to /dev/null instead.
+such as ``graphflow run ... | grep``) and stderr to one-line errors, so the
+banners are sent to /dev/null instead.
 """
 from __future__ import annotations
 
@@ -15,17 +16,25 @@ _libc = ctypes.CDLL(None)
 
 
 @contextmanager
-def native_stdout_silenced():
-    """Point file descriptor 1 at /dev/null while native code runs, flushing C buffers on both sides."""
+def native_output_silenced(*descriptors: int):
+    """Point the given file descriptors at /dev/null while native code runs, flushing C buffers on both sides."""
     sys.stdout.flush()
+    sys.stderr.flush()
     _libc.fflush(None)
-    saved = os.dup(1)
+    saved = [os.dup(fd) for fd in descriptors]
     devnull = os.open(os.devnull, os.O_WRONLY)
     try:
-        os.dup2(devnull, 1)
+        for fd in descriptors:
+            os.dup2(devnull, fd)
         yield
     finally:
         _libc.fflush(None)
-        os.dup2(saved, 1)
-        os.close(saved)
+        for fd, original in zip(descriptors, saved):
+            os.dup2(original, fd)
+            os.close(original)
         os.close(devnull)
+
+
+def native_stdout_silenced():
+    """Silence only stdout (a client connecting prints 'argv[0]=' there)."""
+    return native_output_silenced(1)
