@@ -1,4 +1,4 @@
-"""Serial-arm kinematics in numpy: forward kinematics, Jacobian, damped-least-squares IK.
+"""Serial-arm kinematics: forward kinematics, Jacobian, damped-least-squares IK.
 
 Controllers plan on this kinematic copy of the robot, never on the simulated
 one, so solving IK cannot disturb the physics state (PyBullet's own IK works
@@ -12,9 +12,10 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Sequence
+from typing import TYPE_CHECKING, Sequence
 
-import numpy as np
+if TYPE_CHECKING:
+    import numpy as np
 
 DEFAULT_POSITION_TOLERANCE = 1e-5     # m: 100x below the 1 mm the controllers need
 DEFAULT_ORIENTATION_TOLERANCE = 1e-4  # rad
@@ -23,28 +24,16 @@ DAMPING = 0.02                        # damped least squares: lambda (m, rad), k
 MAX_JOINT_STEP = 0.3                  # rad per iteration: Newton steps far from the solution can overshoot
 
 
-def rotation_from_rpy(roll: float, pitch: float, yaw: float) -> np.ndarray:
+def rotation_from_rpy(roll: float, pitch: float, yaw: float) -> "np.ndarray":
     """URDF's fixed-axis roll-pitch-yaw: R = Rz(yaw) Ry(pitch) Rx(roll)."""
-    return _rotation_about((0, 0, 1), yaw) @ _rotation_about((0, 1, 0), pitch) @ _rotation_about((1, 0, 0), roll)
+    return _matrix(_rpy_rotation((roll, pitch, yaw)))
 
 
-def _rotation_about(axis, angle: float) -> np.ndarray:
-    x, y, z = np.asarray(axis, dtype=float) / np.linalg.norm(axis)
-    c, s = math.cos(angle), math.sin(angle)
-    t = 1.0 - c
-    return np.array([[t * x * x + c, t * x * y - s * z, t * x * z + s * y],
-                     [t * x * y + s * z, t * y * y + c, t * y * z - s * x],
-                     [t * x * z - s * y, t * y * z + s * x, t * z * z + c]])
+def quaternion_to_matrix(quaternion: Sequence[float]) -> "np.ndarray":
+    return _matrix(_quaternion_rotation(quaternion))
 
 
-def quaternion_to_matrix(quaternion: Sequence[float]) -> np.ndarray:
-    x, y, z, w = np.asarray(quaternion, dtype=float) / np.linalg.norm(quaternion)
-    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-                     [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-                     [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
-
-
-def matrix_to_quaternion(matrix: np.ndarray) -> tuple[float, float, float, float]:
+def matrix_to_quaternion(matrix) -> tuple[float, float, float, float]:
     m = matrix
     trace = m[0, 0] + m[1, 1] + m[2, 2]
     if trace > 0:
@@ -62,19 +51,11 @@ def matrix_to_quaternion(matrix: np.ndarray) -> tuple[float, float, float, float
     return tuple(float(c) for c in q)  # type: ignore[return-value]
 
 
-def rotation_error(target: np.ndarray, current: np.ndarray) -> np.ndarray:
-    """The rotation vector (axis * angle, world frame) that turns *current* into *target*."""
-    difference = target @ current.T
-    cos_angle = np.clip((np.trace(difference) - 1.0) / 2.0, -1.0, 1.0)
-    angle = math.acos(cos_angle)
-    vector = np.array([difference[2, 1] - difference[1, 2], difference[0, 2] - difference[2, 0],
-                       difference[1, 0] - difference[0, 1]])
-    if angle < 1e-9:
-        return 0.5 * vector
-    if math.pi - angle < 1e-6:  # 180 degrees: the axis is the column of (R + I) with the largest norm
-        column = (difference + np.eye(3))[:, int(np.argmax(np.diag(difference)))]
-        return angle * column / np.linalg.norm(column)
-    return angle * vector / (2.0 * math.sin(angle))
+def rotation_error(target, current) -> "np.ndarray":
+    """The rotation vector (axis * angle, world frame) that turns *current* into *target* (3x3 arrays)."""
+    import numpy as np
+
+    return np.array(_rotation_error(_flat(target), _flat(current)))
 
 
 @dataclass(frozen=True)
@@ -97,39 +78,63 @@ class IKSolution:
 
 
 class SerialChain:
-    """A fixed-base chain of revolute joints ending in a tool frame (all in the base frame)."""
+    """A fixed-base chain of revolute joints ending in a tool frame (all in the base frame).
+
+    The solver works on plain floats (rotations as row-major 9-tuples): for 3x3
+    and 6x6 arithmetic numpy's per-call overhead costs far more than the
+    arithmetic, and the controllers solve on every tick.
+    """
 
     def __init__(self, joints: Sequence[Joint], tool_xyz=(0.0, 0.0, 0.0), tool_rpy=(0.0, 0.0, 0.0)):
         self.joints = tuple(joints)
         self.names = tuple(j.name for j in self.joints)
-        self.lower = np.array([j.lower for j in self.joints])
-        self.upper = np.array([j.upper for j in self.joints])
-        self._origins = [_transform(j.xyz, j.rpy) for j in self.joints]
-        self._axes = [np.asarray(j.axis, dtype=float) / np.linalg.norm(j.axis) for j in self.joints]
-        self._tool = _transform(tool_xyz, tool_rpy)
+        self.lower = tuple(float(j.lower) for j in self.joints)
+        self.upper = tuple(float(j.upper) for j in self.joints)
+        self._links = tuple(_Link.of(j) for j in self.joints)
+        self._tool_xyz = tuple(float(c) for c in tool_xyz)
+        self._tool_rotation = _rpy_rotation(tool_rpy)
+        self._last_pose: tuple = ((), None)     # (joint positions, their _pose): a warm start begins where a solve ended
 
-    def _frames(self, positions) -> tuple[list[np.ndarray], np.ndarray]:
-        frames, current = [], np.eye(4)
-        for origin, axis, angle in zip(self._origins, self._axes, positions):
-            current = current @ origin
-            frames.append(current)
-            rotation = np.eye(4)
-            rotation[:3, :3] = _rotation_about(axis, angle)
-            current = current @ rotation
-        return frames, current @ self._tool
+    def _pose(self, positions):
+        """(tool position, tool rotation, joint origins, joint axes), all in the base frame."""
+        positions = tuple(positions)
+        if positions == self._last_pose[0]:
+            return self._last_pose[1]
+        pose = self._compute_pose(positions)
+        self._last_pose = (positions, pose)
+        return pose
 
-    def forward(self, positions) -> np.ndarray:
+    def _compute_pose(self, positions):
+        px = py = pz = 0.0
+        r = _IDENTITY
+        origins, axes = [], []
+        for link, angle in zip(self._links, positions):
+            x, y, z = link.xyz
+            px += r[0] * x + r[1] * y + r[2] * z
+            py += r[3] * x + r[4] * y + r[5] * z
+            pz += r[6] * x + r[7] * y + r[8] * z
+            if link.rotation is not None:
+                r = _multiply(r, link.rotation)
+            origins.append((px, py, pz))
+            r = _turn(r, link, angle)
+            axes.append(_apply(r, link.axis) if link.principal is None else r[link.principal::3])
+        x, y, z = _apply(r, self._tool_xyz)
+        return (px + x, py + y, pz + z), _multiply(r, self._tool_rotation), origins, axes
+
+    def forward(self, positions) -> "np.ndarray":
         """The tool's 4x4 pose in the base frame."""
-        return self._frames(positions)[1]
+        import numpy as np
 
-    def jacobian(self, positions) -> np.ndarray:
+        position, rotation = self._pose(positions)[:2]
+        return np.array([[*rotation[0:3], position[0]], [*rotation[3:6], position[1]],
+                         [*rotation[6:9], position[2]], [0.0, 0.0, 0.0, 1.0]])
+
+    def jacobian(self, positions) -> "np.ndarray":
         """6 x n geometric Jacobian of the tool point: rows vx, vy, vz, wx, wy, wz (base frame)."""
-        frames, tool = self._frames(positions)
-        columns = []
-        for frame, axis in zip(frames, self._axes):
-            z = frame[:3, :3] @ axis
-            columns.append(np.concatenate([np.cross(z, tool[:3, 3] - frame[:3, 3]), z]))
-        return np.array(columns).T
+        import numpy as np
+
+        tool, _rotation, origins, axes = self._pose(positions)
+        return np.array(_jacobian_columns(tool, origins, axes)).T
 
     def inverse(self, position, orientation, seed, *,
                 position_tolerance: float = DEFAULT_POSITION_TOLERANCE,
@@ -140,33 +145,182 @@ class SerialChain:
         Damped least squares from *seed*, iterated until both tolerances hold;
         starting from the previous tick's solution it takes one or two steps.
         """
-        target_position = np.asarray(position, dtype=float)
-        target_rotation = quaternion_to_matrix(orientation)
-        q = np.clip(np.asarray(seed, dtype=float), self.lower, self.upper)
-        damping = DAMPING * DAMPING * np.eye(6)
+        tx, ty, tz = (float(c) for c in position)
+        target_rotation = _quaternion_rotation(orientation)
+        lower, upper = self.lower, self.upper
+        q = [min(max(float(v), low), high) for v, low, high in zip(seed, lower, upper)]
+        damping = DAMPING * DAMPING
         for iteration in range(max_iterations + 1):
-            tool = self.forward(q)
-            position_error = target_position - tool[:3, 3]
-            angle_error = rotation_error(target_rotation, tool[:3, :3])
-            position_norm, angle_norm = float(np.linalg.norm(position_error)), float(np.linalg.norm(angle_error))
+            tool, rotation, origins, axes = self._pose(q)
+            error = (tx - tool[0], ty - tool[1], tz - tool[2]) + _rotation_error(target_rotation, rotation)
+            position_norm = math.sqrt(error[0] * error[0] + error[1] * error[1] + error[2] * error[2])
+            angle_norm = math.sqrt(error[3] * error[3] + error[4] * error[4] + error[5] * error[5])
             if position_norm <= position_tolerance and angle_norm <= orientation_tolerance:
-                return IKSolution(tuple(float(v) for v in q), position_norm, angle_norm, iteration, True)
+                return IKSolution(tuple(q), position_norm, angle_norm, iteration, True)
             if iteration == max_iterations:
                 break
-            j = self.jacobian(q)
-            step = j.T @ np.linalg.solve(j @ j.T + damping, np.concatenate([position_error, angle_error]))
-            largest = float(np.max(np.abs(step)))
-            if largest > MAX_JOINT_STEP:
-                step *= MAX_JOINT_STEP / largest
-            q = np.clip(q + step, self.lower, self.upper)
-        return IKSolution(tuple(float(v) for v in q), position_norm, angle_norm, max_iterations, False)
+            # (J^T J + lambda^2 I) step = J^T e: the same step as J^T (J J^T + lambda^2 I)^-1 e
+            columns = _jacobian_columns(tool, origins, axes)
+            normal = [[_dot6(a, b) for b in columns[:i]] + [_dot6(a, a) + damping] for i, a in enumerate(columns)]
+            step = _solve_positive_definite(normal, [_dot6(column, error) for column in columns])
+            largest = max(abs(s) for s in step)
+            scale = MAX_JOINT_STEP / largest if largest > MAX_JOINT_STEP else 1.0
+            q = [min(max(v + scale * s, low), high) for v, s, low, high in zip(q, step, lower, upper)]
+        return IKSolution(tuple(q), position_norm, angle_norm, max_iterations, False)
 
 
-def _transform(xyz, rpy) -> np.ndarray:
-    matrix = np.eye(4)
-    matrix[:3, :3] = rotation_from_rpy(*rpy)
-    matrix[:3, 3] = xyz
-    return matrix
+@dataclass(frozen=True)
+class _Link:
+    """A joint's constants as plain floats: origin, origin rotation (None: identity), unit axis."""
+
+    xyz: tuple[float, float, float]
+    rotation: tuple[float, ...] | None
+    axis: tuple[float, float, float]
+    principal: int | None          # 0, 1, 2 when the axis is +X, +Y, +Z: a cheaper turn
+
+    @classmethod
+    def of(cls, joint: Joint) -> "_Link":
+        norm = math.sqrt(sum(c * c for c in joint.axis))
+        axis = tuple(float(c) / norm for c in joint.axis)
+        principal = axis.index(1.0) if axis in ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)) else None
+        rotation = None if tuple(joint.rpy) == (0.0, 0.0, 0.0) else _rpy_rotation(joint.rpy)
+        return cls(tuple(float(c) for c in joint.xyz), rotation, axis, principal)
+
+
+_IDENTITY = (1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0)
+
+
+def _matrix(rotation) -> "np.ndarray":
+    import numpy as np
+
+    return np.array(rotation, dtype=float).reshape(3, 3)
+
+
+def _flat(matrix) -> tuple[float, ...]:
+    return tuple(float(matrix[i, j]) for i in range(3) for j in range(3))
+
+
+def _axis_rotation(axis, angle: float) -> tuple[float, ...]:
+    """Rotation about a (not necessarily unit) axis, row-major (Rodrigues)."""
+    norm = math.sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2])
+    x, y, z = axis[0] / norm, axis[1] / norm, axis[2] / norm
+    c, s = math.cos(angle), math.sin(angle)
+    t = 1.0 - c
+    return (t * x * x + c, t * x * y - s * z, t * x * z + s * y,
+            t * x * y + s * z, t * y * y + c, t * y * z - s * x,
+            t * x * z - s * y, t * y * z + s * x, t * z * z + c)
+
+
+def _rpy_rotation(rpy) -> tuple[float, ...]:
+    roll, pitch, yaw = (float(c) for c in rpy)
+    return _multiply(_multiply(_axis_rotation((0.0, 0.0, 1.0), yaw), _axis_rotation((0.0, 1.0, 0.0), pitch)),
+                     _axis_rotation((1.0, 0.0, 0.0), roll))
+
+
+def _quaternion_rotation(quaternion) -> tuple[float, ...]:
+    """The rotation matrix of a quaternion (x, y, z, w; normalised here), row-major."""
+    x, y, z, w = (float(c) for c in quaternion)
+    norm = math.sqrt(x * x + y * y + z * z + w * w)
+    x, y, z, w = x / norm, y / norm, z / norm, w / norm
+    return (1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w),
+            2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w),
+            2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y))
+
+
+def _multiply(a, b) -> tuple[float, ...]:
+    """3x3 product of row-major 9-tuples."""
+    a0, a1, a2, a3, a4, a5, a6, a7, a8 = a
+    b0, b1, b2, b3, b4, b5, b6, b7, b8 = b
+    return (a0 * b0 + a1 * b3 + a2 * b6, a0 * b1 + a1 * b4 + a2 * b7, a0 * b2 + a1 * b5 + a2 * b8,
+            a3 * b0 + a4 * b3 + a5 * b6, a3 * b1 + a4 * b4 + a5 * b7, a3 * b2 + a4 * b5 + a5 * b8,
+            a6 * b0 + a7 * b3 + a8 * b6, a6 * b1 + a7 * b4 + a8 * b7, a6 * b2 + a7 * b5 + a8 * b8)
+
+
+def _apply(r, v) -> tuple[float, float, float]:
+    return (r[0] * v[0] + r[1] * v[1] + r[2] * v[2], r[3] * v[0] + r[4] * v[1] + r[5] * v[2],
+            r[6] * v[0] + r[7] * v[1] + r[8] * v[2])
+
+
+def _turn(r, link: _Link, angle: float) -> tuple[float, ...]:
+    """r @ (rotation about the link's axis by angle); about a principal axis only two columns change."""
+    c, s = math.cos(angle), math.sin(angle)
+    r0, r1, r2, r3, r4, r5, r6, r7, r8 = r
+    if link.principal == 2:
+        return (c * r0 + s * r1, c * r1 - s * r0, r2, c * r3 + s * r4, c * r4 - s * r3, r5,
+                c * r6 + s * r7, c * r7 - s * r6, r8)
+    if link.principal == 1:
+        return (c * r0 - s * r2, r1, s * r0 + c * r2, c * r3 - s * r5, r4, s * r3 + c * r5,
+                c * r6 - s * r8, r7, s * r6 + c * r8)
+    if link.principal == 0:
+        return (r0, c * r1 + s * r2, c * r2 - s * r1, r3, c * r4 + s * r5, c * r5 - s * r4,
+                r6, c * r7 + s * r8, c * r8 - s * r7)
+    return _multiply(r, _axis_rotation(link.axis, angle))
+
+
+def _jacobian_columns(tool, origins, axes) -> list[tuple[float, ...]]:
+    """Per joint: (axis x (tool - joint origin), axis), the tool's linear and angular velocity per unit rate."""
+    columns = []
+    for (ox, oy, oz), (ax, ay, az) in zip(origins, axes):
+        rx, ry, rz = tool[0] - ox, tool[1] - oy, tool[2] - oz
+        columns.append((ay * rz - az * ry, az * rx - ax * rz, ax * ry - ay * rx, ax, ay, az))
+    return columns
+
+
+def _dot6(a, b) -> float:
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[4] * b[4] + a[5] * b[5]
+
+
+def _solve_positive_definite(matrix, rhs) -> list[float]:
+    """x with matrix @ x = rhs, by Cholesky (the damped normal matrix is symmetric positive definite).
+
+    Only the lower triangle of *matrix* is read (row i may stop at column i).
+    """
+    n = len(rhs)
+    lower = [[0.0] * n for _ in range(n)]
+    for i in range(n):
+        row = lower[i]
+        for j in range(i + 1):
+            other = lower[j]
+            total = matrix[i][j]
+            for k in range(j):
+                total -= row[k] * other[k]
+            row[j] = math.sqrt(total) if i == j else total / other[j]
+    y = [0.0] * n
+    for i in range(n):
+        total = rhs[i]
+        for k in range(i):
+            total -= lower[i][k] * y[k]
+        y[i] = total / lower[i][i]
+    x = [0.0] * n
+    for i in reversed(range(n)):
+        total = y[i]
+        for k in range(i + 1, n):
+            total -= lower[k][i] * x[k]
+        x[i] = total / lower[i][i]
+    return x
+
+
+def _rotation_error(target, current) -> tuple[float, float, float]:
+    """``rotation_error`` on 9-tuples: the rotation vector turning *current* into *target* (world frame)."""
+    t0, t1, t2, t3, t4, t5, t6, t7, t8 = target
+    c0, c1, c2, c3, c4, c5, c6, c7, c8 = current
+    # difference = target @ current.T
+    d00, d01, d02 = t0 * c0 + t1 * c1 + t2 * c2, t0 * c3 + t1 * c4 + t2 * c5, t0 * c6 + t1 * c7 + t2 * c8
+    d10, d11, d12 = t3 * c0 + t4 * c1 + t5 * c2, t3 * c3 + t4 * c4 + t5 * c5, t3 * c6 + t4 * c7 + t5 * c8
+    d20, d21, d22 = t6 * c0 + t7 * c1 + t8 * c2, t6 * c3 + t7 * c4 + t8 * c5, t6 * c6 + t7 * c7 + t8 * c8
+    angle = math.acos(min(max((d00 + d11 + d22 - 1.0) / 2.0, -1.0), 1.0))
+    vx, vy, vz = d21 - d12, d02 - d20, d10 - d01
+    if angle < 1e-9:
+        return 0.5 * vx, 0.5 * vy, 0.5 * vz
+    if math.pi - angle < 1e-6:  # 180 degrees: the axis is the column of (difference + I) with the largest diagonal
+        diagonal = (d00, d11, d22)
+        j = diagonal.index(max(diagonal))
+        column = ((d00, d10, d20), (d01, d11, d21), (d02, d12, d22))[j]
+        column = tuple(c + (1.0 if i == j else 0.0) for i, c in enumerate(column))
+        scale = angle / math.sqrt(column[0] * column[0] + column[1] * column[1] + column[2] * column[2])
+        return scale * column[0], scale * column[1], scale * column[2]
+    scale = angle / (2.0 * math.sin(angle))
+    return scale * vx, scale * vy, scale * vz
 
 
 # UR10 (ros-industrial universal_robot kinetic-devel ur10.urdf.xacro, as graphflow/assets/ur10.usda)
@@ -189,5 +343,7 @@ def ur10_chain(tool_offset: float = UR10_SUCTION_TIP) -> SerialChain:
         Joint("wrist_3_joint", (0.0, 0.0, 0.1157), (0.0, 0.0, 0.0), (0, 1, 0), -_TWO_PI, _TWO_PI),
     )
     # ee_fixed_joint (0, 0.0922, 0) rpy (0, 0, pi/2), then the tool point along ee_link +X
-    ee_link = _transform((0.0, 0.0922, 0.0), (0.0, 0.0, half_pi)) @ _transform((tool_offset, 0.0, 0.0), (0, 0, 0))
-    return SerialChain(joints, tool_xyz=tuple(ee_link[:3, 3]), tool_rpy=(0.0, 0.0, half_pi))
+    ee_rotation = _rpy_rotation((0.0, 0.0, half_pi))
+    tip = _apply(ee_rotation, (tool_offset, 0.0, 0.0))
+    tool_xyz = (tip[0], 0.0922 + tip[1], tip[2])
+    return SerialChain(joints, tool_xyz=tool_xyz, tool_rpy=(0.0, 0.0, half_pi))

@@ -11,11 +11,9 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
-from graphflow.kinematics import SUCTION_DOWN, matrix_to_quaternion, quaternion_to_matrix, ur10_chain
 from graphflow.spec import Attribute
 from graphflow.types import ExecState
+from graphflow.usd.transforms import relative
 
 UR10_EVENTS_DT = (0.01, 0.0035, 0.01, 1.0, 0.008, 0.005, 0.005, 1.0, 0.01, 0.08)
 PHASE_COUNT = 10
@@ -25,6 +23,9 @@ EVENT_NAMES = ("move_above_pick", "descend", "settle", "gripper_close", "lift", 
                "descend_to_place", "gripper_open", "lift_after_place", "hold_above_place", "done")
 CLOSE_EVENT, OPEN_EVENT, SETTLE_EVENT = 3, 7, 2
 DEFAULT_INITIAL_HEIGHT = 0.3
+# graphflow.kinematics.SUCTION_DOWN (ee_link +X, the suction axis, pointing down), written out so that loading
+# the node registry does not load the IK solver: UR10Arm imports it on first use
+SUCTION_DOWN = (0.0, math.sqrt(0.5), 0.0, math.sqrt(0.5))
 
 
 def mix(t: float) -> float:
@@ -101,11 +102,15 @@ class PickPlaceRun:
 class UR10Arm:
     """Turns world-frame suction-tip targets into UR10 joint position targets, through the world.
 
-    IK runs on a numpy copy of the arm (graphflow.kinematics), warm-started
-    from the previous solution, so it never touches the simulated state.
+    IK runs on a kinematic copy of the arm (graphflow.kinematics), warm-started
+    from the previous solution, so it never touches the simulated state. A
+    target equal to the last one solved keeps its solution: solving again from
+    it would return it unchanged.
     """
 
     def __init__(self, world, robot_path: str):
+        from graphflow.kinematics import ur10_chain
+
         self.world = world
         self.robot_path = robot_path
         self.chain = ur10_chain()
@@ -114,21 +119,22 @@ class UR10Arm:
         if missing:
             raise ValueError(f"{robot_path} is not a UR10: no joint {', '.join(missing)}")
         self.indices = [names.index(name) for name in self.chain.names]
-        position, orientation = world.prim_pose(robot_path)
-        self.base_position = np.asarray(position, dtype=float)
-        self.base_rotation = quaternion_to_matrix(orientation)
+        self.base_pose = world.prim_pose(robot_path)
         current = world.joint_positions(robot_path)
         self.solution = tuple(current[i] for i in self.indices)
+        self._solved_for = None
 
     def move_tip(self, tip, orientation=SUCTION_DOWN) -> tuple[float, ...]:
         """Solve IK for the tip (world frame) and send the joint targets; returns them."""
-        local = self.base_rotation.T @ (np.asarray(tip, dtype=float) - self.base_position)
-        rotation = self.base_rotation.T @ quaternion_to_matrix(orientation)
-        solution = self.chain.inverse(local, matrix_to_quaternion(rotation), self.solution)
-        if not solution.converged:
-            raise ValueError(f"cannot reach tool target {tuple(round(c, 4) for c in tip)}: "
-                             f"IK left {solution.position_error * 1000:.1f} mm")
-        self.solution = solution.positions
+        target = (tuple(tip), tuple(orientation))
+        if target != self._solved_for:
+            local_position, local_orientation = relative(self.base_pose, target)
+            solution = self.chain.inverse(local_position, local_orientation, self.solution)
+            if not solution.converged:
+                raise ValueError(f"cannot reach tool target {tuple(round(c, 4) for c in tip)}: "
+                                 f"IK left {solution.position_error * 1000:.1f} mm")
+            self.solution = solution.positions
+            self._solved_for = target
         self.world.set_joint_targets(self.robot_path, self.indices, positions=self.solution)
         return self.solution
 

@@ -1,4 +1,5 @@
 """Node registry: built-in discovery, aliases, third-party entry points, and no code named by graph files."""
+import subprocess
 import sys
 import types
 
@@ -69,3 +70,11 @@ def test_a_graph_naming_a_python_path_does_not_import_it():
                         "nodes": [{"name": "x", "type": "antigravity"}, {"name": "y", "type": "os.system"}]})
     assert "antigravity" not in sys.modules
     assert [p.message for p in caught.value.problems] == ["unknown node type 'antigravity'", "unknown node type 'os.system'"]
+
+
+def test_loading_the_builtin_nodes_imports_neither_numpy_nor_the_ik_solver():
+    # every graph loads the registry: the pick-and-place nodes import their solver (and numpy) on first use
+    code = ("import sys; from graphflow.registry import default_registry; default_registry(); "
+            "print([m for m in ('numpy', 'graphflow.kinematics') if m in sys.modules])")
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert result.stdout.strip() == "[]"

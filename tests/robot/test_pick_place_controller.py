@@ -17,6 +17,13 @@ UR10_PHASE_TICKS = [100, 286, 100, 1, 125, 200, 200, 1, 100, 13]   # reference Â
 CHAIN = ur10_chain()
 
 
+def test_the_default_orientation_is_the_solvers_suction_down():
+    from graphflow.kinematics import SUCTION_DOWN
+    from graphflow_nodes._pick_place import SUCTION_DOWN as written_out
+
+    assert written_out == SUCTION_DOWN
+
+
 def _controller(world=None, **inputs):
     world = world or FakeUR10World()
     values = {"robotPrim": ROBOT, "gripperPrim": GRIPPER, "pickingPosition": PICK, "placingPosition": PLACE,
