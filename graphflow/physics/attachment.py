@@ -115,13 +115,15 @@ class PyBulletAttachments:
             position, orientation = state[0], state[1]
         return tuple(position), tuple(orientation)
 
-    def _com_velocity(self, body: int, link: int):
+    def _com_motion(self, body: int, link: int):
+        """(centre-of-mass pose, linear velocity, angular velocity): one PyBullet call for a link."""
         if link < 0:
+            position, orientation = self.bullet.getBasePositionAndOrientation(body)
             linear, angular = self.bullet.getBaseVelocity(body)
         else:
             state = self.bullet.getLinkState(body, link, computeLinkVelocity=1, computeForwardKinematics=1)
-            linear, angular = state[6], state[7]
-        return tuple(linear), tuple(angular)
+            position, orientation, linear, angular = state[0], state[1], state[6], state[7]
+        return (tuple(position), tuple(orientation)), tuple(linear), tuple(angular)
 
     def joint_frame(self, body: int, link: int, joint_in_com: Pose) -> Pose:
         """World pose of a joint frame given in the link's centre-of-mass frame."""
@@ -236,10 +238,8 @@ class PyBulletAttachments:
 
     def _advance(self, hold: _Hold, dt: float) -> None:
         mass, inertia_diagonal = self._dynamics(*hold.target)
-        target_com = self.com_pose(*hold.target)
-        gripper_com = self.com_pose(*hold.gripper)
-        v_object, w_object = self._com_velocity(*hold.target)
-        v_gripper, w_gripper = self._com_velocity(*hold.gripper)
+        target_com, v_object, w_object = self._com_motion(*hold.target)
+        gripper_com, v_gripper, w_gripper = self._com_motion(*hold.gripper)
         lever = _sub(target_com[0], gripper_com[0])
         v_rigid = _add(v_gripper, _cross(w_gripper, lever))
         current = (v_object, w_object, v_rigid, w_gripper)
@@ -292,6 +292,7 @@ class WorldAttachmentBackend:
         self.world = world
         self.mechanism = PyBulletAttachments(world.client)
         self._gravity_restore: dict[int, str] = {}
+        self._joint_frames: dict[tuple, Pose] = {}     # (body0 path, joint pose in it) -> joint pose in the COM frame
 
     def _body(self, path: str):
         try:
@@ -307,7 +308,13 @@ class WorldAttachmentBackend:
         return path_a == path_b or (self._body(path_a) or ()) == (self._body(path_b) or (None,))
 
     def _joint_in_com(self, point) -> Pose:
-        return relative(self.world.inertial_in_prim(point.body0_path), point.local_pose0)
+        """The point's joint frame in its body's centre-of-mass frame (constant until the world is rebuilt)."""
+        key = (point.body0_path, point.local_pose0)
+        frame = self._joint_frames.get(key)
+        if frame is None:
+            frame = self._joint_frames[key] = relative(self.world.inertial_in_prim(point.body0_path),
+                                                       point.local_pose0)
+        return frame
 
     def attachment_frame(self, point) -> Pose | None:
         body = self._body(point.body0_path)
@@ -349,6 +356,7 @@ class WorldAttachmentBackend:
     def reset(self) -> None:
         self.mechanism.clear()
         self._gravity_restore.clear()
+        self._joint_frames.clear()
 
 
 def _integrate(value: float, rate: float, load: float, inertia: float, dt: float, axis: AxisCompliance):

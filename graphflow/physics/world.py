@@ -25,6 +25,21 @@ SOLVER_ITERATIONS = 50              # PyBullet's default, stated so it stays fix
 MOTOR_MAX_FORCE = 1.0e9             # N or N m: a floating-base drive without a force limit
 
 
+class _BoundClient(BulletClient):
+    """A ``BulletClient`` that binds each PyBullet function to the client once.
+
+    ``BulletClient.__getattr__`` builds a new ``functools.partial`` on every
+    call; the world makes a few dozen calls per step, so the bound function is
+    kept on the instance, where later lookups find it without ``__getattr__``.
+    """
+
+    def __getattr__(self, name):
+        attribute = super().__getattr__(name)
+        if name != "disconnect":          # BulletClient forgets its id on disconnect: keep that lookup live
+            self.__dict__[name] = attribute
+        return attribute
+
+
 class RayHit(NamedTuple):
     prim_path: str                              # the rigid body (or static collider) that was hit
     position: tuple[float, float, float]
@@ -84,10 +99,10 @@ class PyBulletWorld:
         self.playing = True
         try:
             if gui:
-                self.client = BulletClient(connection_mode=pybullet.GUI)
+                self.client = _BoundClient(connection_mode=pybullet.GUI)
             else:
                 with native_stdout_silenced():
-                    self.client = BulletClient(connection_mode=pybullet.DIRECT)
+                    self.client = _BoundClient(connection_mode=pybullet.DIRECT)
         except pybullet.error as error:
             raise WorldError(f"cannot open a PyBullet {'GUI' if gui else 'DIRECT'} client: {error}") from None
         self._mesh_directory = tempfile.mkdtemp(prefix="graphflow-meshes-")
@@ -105,6 +120,7 @@ class PyBulletWorld:
         self.scene: BuiltScene = SceneBuilder(client, self.description, self._mesh_directory).build()
         self._gravity_off = {path for path, handle in self.scene.bodies.items()
                              if not handle.gravity_enabled and handle.kind == "dynamic"}
+        self._gravity_plan: list[tuple] | None = None      # from _gravity_off and masses, rebuilt when they change
         self._pending_forces: list[tuple[int, int, tuple, tuple | None]] = []
         self._offsets: dict[str, tuple[str | None, Pose]] = {}
 
@@ -172,17 +188,41 @@ class PyBulletWorld:
             if not articulation.fixed_base:
                 self._drive_floating(articulation, dt)
             elif any(d is not None for d in articulation.drives) or any(articulation.efforts):
-                client.setJointMotorControlArray(articulation.body_id, list(articulation.joint_indices),
+                client.setJointMotorControlArray(articulation.body_id, articulation.joint_indices,
                                                  pybullet.TORQUE_CONTROL,
                                                  forces=self._drive_efforts(articulation, dt))
-        gravity = self.description.gravity
-        for path in sorted(self._gravity_off):
-            handle = self.scene.bodies[path]
-            com = self._inertial_pose(handle)[0]
-            client.applyExternalForce(handle.body_id, handle.link, [-handle.mass * g for g in gravity], com,
-                                      pybullet.WORLD_FRAME)
+        self._cancel_gravity()
         for body_id, link, force, position in self._pending_forces:
             client.applyExternalForce(body_id, link, force, position, pybullet.WORLD_FRAME)
+
+    def _cancel_gravity(self):
+        """Apply -m g at the centre of mass of every dynamic body whose gravity is switched off."""
+        if self._gravity_plan is None:
+            self._gravity_plan = self._plan_gravity_cancelling()
+        client = self.client
+        for body_id, base_weight, links, link_weights in self._gravity_plan:
+            if base_weight is not None:
+                client.applyExternalForce(body_id, -1, base_weight, client.getBasePositionAndOrientation(body_id)[0],
+                                          pybullet.WORLD_FRAME)
+            if links:   # one forward-kinematics call for all the body's links, not one per link
+                states = client.getLinkStates(body_id, links, computeForwardKinematics=1)
+                for link, weight, state in zip(links, link_weights, states):
+                    client.applyExternalForce(body_id, link, weight, state[0], pybullet.WORLD_FRAME)
+
+    def _plan_gravity_cancelling(self) -> list[tuple]:
+        """Per PyBullet body: (id, its base's weight or None, links, their weights) of the bodies in _gravity_off."""
+        gravity = self.description.gravity
+        plan: dict[int, list] = {}
+        for path in sorted(self._gravity_off):
+            handle = self.scene.bodies[path]
+            entry = plan.setdefault(handle.body_id, [handle.body_id, None, [], []])
+            weight = [-handle.mass * g for g in gravity]
+            if handle.link == -1:
+                entry[1] = weight
+            else:
+                entry[2].append(handle.link)
+                entry[3].append(weight)
+        return [tuple(entry) for entry in plan.values()]
 
     def _drive_efforts(self, articulation: ArticulationHandle, dt: float) -> list[float]:
         """Joint efforts of the drives: a PD law integrated implicitly (backward Euler).
@@ -201,40 +241,41 @@ class PyBulletWorld:
         v_max (d + dt k) / k, where the drive's pull and damping balance at v_max (PyBullet's
         own velocity clamp fights an implicit drive, so it is not used).
         """
-        states = self.client.getJointStates(articulation.body_id, list(articulation.joint_indices))
+        states = self.client.getJointStates(articulation.body_id, articulation.joint_indices)
         signs = articulation.signs
-        positions = [sign * s[0] for sign, s in zip(signs, states)]
-        velocities = [sign * s[1] for sign, s in zip(signs, states)]
-        count = len(positions)
+        count = len(states)
         inertia = self._joint_inertia(articulation, [s[0] for s in states])
-        residual = np.zeros(count)
-        implicit = np.zeros(count)
-        force_driven = np.zeros(count, dtype=bool)
-        efforts = np.array(articulation.efforts, dtype=float)
+        efforts = list(articulation.efforts)
+        residual = [0.0] * count
+        implicit = [0.0] * count
+        force_driven = []
         for dof, drive in enumerate(articulation.drives):
             if drive is None:
                 continue
             k, d = drive.stiffness, drive.damping
-            error = min(max(drive.target_position, drive.lower), drive.upper) - positions[dof]
+            sign, state = signs[dof], states[dof]
+            position, velocity = sign * state[0], sign * state[1]
+            error = min(max(drive.target_position, drive.lower), drive.upper) - position
             if drive.max_velocity is not None and k > 0 and d > 0:
                 limit = drive.max_velocity * (d + dt * k) / k
                 error = max(-limit, min(limit, error))
-            r = k * (error - dt * velocities[dof]) + d * (drive.target_velocity - velocities[dof])
+            r = k * (error - dt * velocity) + d * (drive.target_velocity - velocity)
             if drive.acceleration:
-                efforts[dof] += inertia[dof, dof] * r / (1.0 + dt * d + dt * dt * k)
+                efforts[dof] += float(inertia[dof, dof]) * r / (1.0 + dt * d + dt * dt * k)
             else:
                 residual[dof] = r
                 implicit[dof] = dt * d + dt * dt * k
-                force_driven[dof] = True
-        if force_driven.any():
-            # signs flip rows and columns of M alike, so M in USD coordinates is S M S
-            sign_vector = np.array(signs)
-            matrix = inertia * np.outer(sign_vector, sign_vector)
-            acceleration = np.linalg.solve(matrix + np.diag(implicit), residual)
-            efforts[force_driven] += (residual - implicit * acceleration)[force_driven]
+                force_driven.append(dof)
+        if force_driven:
+            if -1.0 in signs:   # signs flip rows and columns of M alike, so M in USD coordinates is S M S
+                inertia = inertia * np.outer(signs, signs)
+            matrix = inertia + np.diag(implicit)
+            acceleration = np.linalg.solve(matrix, residual).tolist()
+            for dof in force_driven:
+                efforts[dof] += residual[dof] - implicit[dof] * acceleration[dof]
         result = []
         for dof, drive in enumerate(articulation.drives):
-            effort = float(efforts[dof])
+            effort = efforts[dof]
             if drive is not None:
                 effort = max(-drive.max_force, min(drive.max_force, effort))
             result.append(signs[dof] * effort)
@@ -257,7 +298,7 @@ class PyBulletWorld:
         """
         client = self.client
         signs = articulation.signs
-        states = client.getJointStates(articulation.body_id, list(articulation.joint_indices))
+        states = client.getJointStates(articulation.body_id, articulation.joint_indices)
         indices, velocities, forces = [], [], []
         for dof, drive in enumerate(articulation.drives):
             if drive is None:
@@ -276,7 +317,7 @@ class PyBulletWorld:
             client.setJointMotorControlArray(articulation.body_id, indices, pybullet.VELOCITY_CONTROL,
                                              targetVelocities=velocities, forces=forces)
         if any(articulation.efforts):
-            client.setJointMotorControlArray(articulation.body_id, list(articulation.joint_indices),
+            client.setJointMotorControlArray(articulation.body_id, articulation.joint_indices,
                                              pybullet.TORQUE_CONTROL,
                                              forces=[sign * effort for sign, effort in zip(signs, articulation.efforts)])
 
@@ -289,7 +330,8 @@ class PyBulletWorld:
     # -- backend-internal API (gripper engineer) ------------------------------------------------
     def body_link(self, prim_path: str) -> tuple[int, int]:
         """(PyBullet body id, link index) of a body prim or of a collider under it."""
-        return self._body(prim_path).body_id, self._body(prim_path).link
+        handle = self._body(prim_path)
+        return handle.body_id, handle.link
 
     def inertial_in_prim(self, prim_path: str) -> Pose:
         """The link's inertial (centre-of-mass) frame in the prim frame: PyBullet constraint frames are relative to it."""
@@ -308,6 +350,7 @@ class PyBulletWorld:
             self._gravity_off.discard(handle.path)
         elif handle.kind == "dynamic":
             self._gravity_off.add(handle.path)
+        self._gravity_plan = None
 
     # -- lookups ---------------------------------------------------------------------------------
     def _body(self, prim_path: str) -> BodyHandle:
@@ -414,12 +457,12 @@ class PyBulletWorld:
 
     def joint_positions(self, articulation_path: str) -> tuple[float, ...]:
         articulation = self._articulation(articulation_path)
-        states = self.client.getJointStates(articulation.body_id, list(articulation.joint_indices))
+        states = self.client.getJointStates(articulation.body_id, articulation.joint_indices)
         return tuple(sign * s[0] for sign, s in zip(articulation.signs, states))
 
     def joint_velocities(self, articulation_path: str) -> tuple[float, ...]:
         articulation = self._articulation(articulation_path)
-        states = self.client.getJointStates(articulation.body_id, list(articulation.joint_indices))
+        states = self.client.getJointStates(articulation.body_id, articulation.joint_indices)
         return tuple(sign * s[1] for sign, s in zip(articulation.signs, states))
 
     def set_joint_targets(self, articulation_path: str, indices: Sequence[int], *,
@@ -603,6 +646,7 @@ class PyBulletWorld:
             client.changeDynamics(handle.body_id, handle.link, mass=mass,
                                   localInertiaDiagonal=[c * mass / handle.mass for c in inertia])
             handle.mass = mass
+            self._gravity_plan = None
             return
         vector = tuple(float(c) for c in value)
         if name in ("xformOp:translate", "xformOp:orient"):

@@ -31,10 +31,11 @@ def quat_conjugate(q: Quat) -> Quat:
 
 
 def quat_normalize(q: Quat) -> Quat:
-    norm = math.sqrt(sum(c * c for c in q))
+    x, y, z, w = q
+    norm = math.sqrt(x * x + y * y + z * z + w * w)
     if norm == 0.0:
         return IDENTITY_QUAT
-    return tuple(c / norm for c in q)  # type: ignore[return-value]
+    return (x / norm, y / norm, z / norm, w / norm)
 
 
 def quat_rotate(q: Quat, v: Vec3) -> Vec3:
