@@ -24,11 +24,19 @@ SPEC = NodeSpec(
 )
 
 
+# exact types float() converts as they are: no shape to keep, nothing to check (a key state, every tick)
+_SCALARS = frozenset((bool, int, float))
+
+
 def compute(db):
-    if db.inputs.value is None:
+    value = db.inputs.value
+    if type(value) in _SCALARS:
+        db.outputs.converted = float(value)
+        return
+    if value is None:
         db.error("inputs:value has no value; connect it or set a value")
     try:
-        db.outputs.converted = elementwise(float, [db.inputs.value], ("value",),
+        db.outputs.converted = elementwise(float, [value], ("value",),
                                            lambda x: is_boolean(x) or is_number(x), "bools or numbers")
     except MathError as error:
         db.error(str(error))
