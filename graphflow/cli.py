@@ -76,6 +76,24 @@ class _Progress:
             sys.stderr.write("\n")
 
 
+class _RealTimePacer:
+    """Holds a --gui run to the pace of simulated time (times --speed), so people can watch it.
+
+    Only the display is paced: the simulation never reads the wall clock, so a paced run
+    computes exactly what a headless run does.
+    """
+
+    def __init__(self, world, speed: float):
+        self.world = world
+        self.speed = speed
+        self.started = time.perf_counter()
+
+    def __call__(self) -> None:
+        ahead = self.world.time / self.speed - (time.perf_counter() - self.started)
+        if ahead > 0:
+            time.sleep(ahead)
+
+
 def _load(path: str):
     try:
         return load_document(path)
@@ -162,6 +180,9 @@ def command_run(args) -> int:
     except BadInput:
         simulation.close()
         raise
+
+    if args.gui and args.speed > 0:
+        after_tick.append(_RealTimePacer(simulation.world, args.speed))
 
     def on_tick(count: int, limit: int | None) -> None:
         for hook in after_tick:
@@ -382,7 +403,9 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--ticks", type=_positive_int, help="stop after N ticks")
     run.add_argument("--seconds", type=_positive_float, help="stop after S simulated seconds")
     run.add_argument("--seed", type=int, default=0, help="seed for random number generators (default 0)")
-    run.add_argument("--gui", action="store_true", help="open the PyBullet window")
+    run.add_argument("--gui", action="store_true", help="open the PyBullet window (paced to real time, see --speed)")
+    run.add_argument("--speed", type=float, default=1.0, metavar="X",
+                     help="with --gui: run at X times real time (default 1; 0 = as fast as possible)")
     run.add_argument("--keys", metavar="FILE",
                      help='scripted keyboard for OnKeyboardInput nodes: JSON {"keys": ["A@1.5", "Up@2-3", ...]}')
     run.add_argument("--key", action="append", default=[], metavar="KEY@TIME",

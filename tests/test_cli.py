@@ -121,3 +121,21 @@ def test_missing_stage_is_one_line_on_stderr(tmp_path):
     result = graphflow("run", str(graph))
     assert result.returncode == 2
     assert result.stderr.splitlines() == [f"graphflow: error: {graph}: {tmp_path / 'nope.usda'}: no such stage file"]
+
+
+def test_gui_pacer_waits_for_simulated_time_only_when_ahead(monkeypatch):
+    from types import SimpleNamespace
+
+    from graphflow import cli
+
+    clock = [100.0]
+    slept = []
+    monkeypatch.setattr(cli.time, "perf_counter", lambda: clock[0])
+    monkeypatch.setattr(cli.time, "sleep", slept.append)
+    world = SimpleNamespace(time=0.0)
+    pacer = cli._RealTimePacer(world, speed=2.0)
+    world.time, clock[0] = 1.0, 100.1        # 1 s simulated at 2x = 0.5 s of wall time; 0.1 s went by
+    pacer()
+    world.time, clock[0] = 1.5, 101.0        # behind: no wait
+    pacer()
+    assert slept == [pytest.approx(0.4)]
