@@ -155,6 +155,10 @@ def command_run(args) -> int:
         pad = scripted_pad(args.gamepad, args.pad)
     except (KeySpecError, PadSpecError) as error:
         raise BadInput(str(error)) from None
+    if args.gui:
+        from .physics.native_output import route_native_stdout_to_stderr
+
+        route_native_stdout_to_stderr()
     try:
         simulation = Simulation(document, gui=args.gui, on_log=_print_log_event)
     except (ValueError, OSError) as error:

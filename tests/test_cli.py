@@ -139,3 +139,13 @@ def test_gui_pacer_waits_for_simulated_time_only_when_ahead(monkeypatch):
     world.time, clock[0] = 1.5, 101.0        # behind: no wait
     pacer()
     assert slept == [pytest.approx(0.4)]
+
+
+@pytest.mark.skipif(__import__("shutil").which("xvfb-run") is None, reason="needs xvfb-run for a virtual display")
+def test_gui_run_opens_the_window_and_keeps_stdout_for_the_graph():
+    result = subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 800x600x24", sys.executable, "-m", "graphflow.cli",
+                             "run", str(ROOT / "graphs" / "ur10_pick_place.json"), "--gui", "--speed", "0", "--seconds", "2"],
+                            capture_output=True, text=True, timeout=120)
+    assert result.returncode == 0, result.stderr[-2000:]
+    assert result.stdout.splitlines() == ["phase 0 move_above_pick: gripper Open", "phase 1 descend: gripper Open"]
+    assert "GL_VERSION" in result.stderr, "the PyBullet window really opened (its diagnostics go to stderr)"

@@ -38,3 +38,17 @@ def native_output_silenced(*descriptors: int):
 def native_stdout_silenced():
     """Silence only stdout (a client connecting prints 'argv[0]=' there)."""
     return native_output_silenced(1)
+
+
+def route_native_stdout_to_stderr() -> None:
+    """For a whole GUI run: native code's stdout goes to stderr, Python's stdout keeps the real one.
+
+    The PyBullet window's threads print OpenGL and thread diagnostics at any time, not only while
+    connecting, so a scoped redirection cannot catch them. Only the CLI, which owns the process,
+    calls this.
+    """
+    sys.stdout.flush()
+    _libc.fflush(None)
+    real_stdout = os.dup(1)
+    os.dup2(2, 1)
+    sys.stdout = os.fdopen(real_stdout, "w", buffering=1, encoding=sys.stdout.encoding, errors=sys.stdout.errors)
