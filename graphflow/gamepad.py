@@ -29,10 +29,11 @@ from __future__ import annotations
 
 import json
 import re
-import weakref
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterable, Mapping, Protocol
+
+from .input_service import PerWorld, StepPolledDevice
 
 STICK_AXES = ("Left Stick X Axis", "Left Stick Y Axis", "Right Stick X Axis", "Right Stick Y Axis")
 TRIGGERS = ("Left Trigger", "Right Trigger")
@@ -182,42 +183,30 @@ def scripted_pad(path: str | Path | None, specs: Iterable[str] = ()) -> Scripted
     return ScriptedPad(changes)
 
 
-class Gamepad:
+class Gamepad(StepPolledDevice[PadSnapshot]):
     """The gamepad state of one world: polls its source once per physics step and remembers values."""
 
     def __init__(self, source: PadSource):
-        self.source = source
         self._values: dict[tuple[int, str], float] = {}
-        self._snapshot = PadSnapshot(-1, source.connected, (), {})
+        super().__init__(source)
 
-    def snapshot(self, world) -> PadSnapshot:
-        step = world.step_index
-        if step != self._snapshot.step:
-            if step < self._snapshot.step:     # the world was reset: replay the timeline from the start
-                self._values.clear()
-                rewind = getattr(self.source, "rewind", None)
-                if rewind is not None:
-                    rewind()
-            changes = tuple(self.source.poll(world.time))
-            for pad, element, value in changes:
-                self._values[(pad, element)] = value
-            self._snapshot = PadSnapshot(step, self.source.connected, changes, dict(self._values))
-        return self._snapshot
+    def _advance(self, step: int, changes: tuple) -> PadSnapshot:
+        for pad, element, value in changes:
+            self._values[(pad, element)] = value
+        return PadSnapshot(step, self.source.connected, changes, dict(self._values))
+
+    def _forget(self) -> None:
+        self._values.clear()
 
 
-_gamepads: "weakref.WeakKeyDictionary[object, Gamepad]" = weakref.WeakKeyDictionary()
+_gamepads: PerWorld[Gamepad] = PerWorld(lambda world: Gamepad(NeutralPad()))
 
 
 def attach_gamepad(world, source: PadSource) -> Gamepad:
     """Make *source* the gamepad of *world* (replacing any earlier one)."""
-    gamepad = Gamepad(source)
-    _gamepads[world] = gamepad
-    return gamepad
+    return _gamepads.attach(world, Gamepad(source))
 
 
 def gamepad_for(world) -> Gamepad:
     """The gamepad attached to *world*; by default one neutral pad."""
-    gamepad = _gamepads.get(world)
-    if gamepad is None:
-        gamepad = attach_gamepad(world, NeutralPad())
-    return gamepad
+    return _gamepads.get(world)

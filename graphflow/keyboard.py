@@ -23,10 +23,11 @@ from __future__ import annotations
 
 import json
 import re
-import weakref
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterable, Protocol
+
+from .input_service import PerWorld, StepPolledDevice
 
 LETTERS = tuple(chr(code) for code in range(ord("A"), ord("Z") + 1))
 DIGITS = tuple(f"Key{digit}" for digit in range(10))
@@ -171,51 +172,42 @@ def scripted_keys(path: str | Path | None, specs: Iterable[str] = ()) -> Scripte
     return ScriptedKeys(actions)
 
 
-class Keyboard:
+class Keyboard(StepPolledDevice[KeySnapshot]):
     """The key state of one world: polls its source once per physics step and remembers held keys."""
 
     def __init__(self, source: KeySource):
-        self.source = source
         self._held: set[str] = set()
-        self._snapshot = KeySnapshot(-1, frozenset(), (), frozenset())
+        super().__init__(source)
 
-    def snapshot(self, world) -> KeySnapshot:
-        step = world.step_index
-        if step != self._snapshot.step:
-            if step < self._snapshot.step:     # the world was reset: replay the timeline from the start
-                self._held.clear()
-                rewind = getattr(self.source, "rewind", None)
-                if rewind is not None:
-                    rewind()
-            held_before = frozenset(self._held)
-            transitions = tuple(self.source.poll(world.time))
-            for key, is_down in transitions:
-                (self._held.add if is_down else self._held.discard)(key)
-            self._snapshot = KeySnapshot(step, held_before, transitions, frozenset(self._held))
-        return self._snapshot
+    def _advance(self, step: int, transitions: tuple) -> KeySnapshot:
+        held_before = frozenset(self._held)
+        for key, is_down in transitions:
+            (self._held.add if is_down else self._held.discard)(key)
+        return KeySnapshot(step, held_before, transitions, frozenset(self._held))
+
+    def _forget(self) -> None:
+        self._held.clear()
 
 
-_keyboards: "weakref.WeakKeyDictionary[object, Keyboard]" = weakref.WeakKeyDictionary()
+def _default_keyboard(world) -> Keyboard:
+    """A PyBullet world's window (empty in DIRECT), else no keys."""
+    client = getattr(world, "client", None)
+    events = getattr(client, "getKeyboardEvents", None)
+    if events is not None:
+        from graphflow.physics.keyboard import PyBulletKeys
+
+        return Keyboard(PyBulletKeys(events))
+    return Keyboard(NoKeys())
+
+
+_keyboards: PerWorld[Keyboard] = PerWorld(_default_keyboard)
 
 
 def attach_keyboard(world, source: KeySource) -> Keyboard:
     """Make *source* the keyboard of *world* (replacing any earlier one)."""
-    keyboard = Keyboard(source)
-    _keyboards[world] = keyboard
-    return keyboard
+    return _keyboards.attach(world, Keyboard(source))
 
 
 def keyboard_for(world) -> Keyboard:
     """The keyboard attached to *world*; by default a PyBullet world's window, else no keys."""
-    keyboard = _keyboards.get(world)
-    if keyboard is None:
-        client = getattr(world, "client", None)          # a PyBullet world: read its window (empty in DIRECT)
-        events = getattr(client, "getKeyboardEvents", None)
-        if events is not None:
-            from graphflow.physics.keyboard import PyBulletKeys
-
-            source: KeySource = PyBulletKeys(events)
-        else:
-            source = NoKeys()
-        keyboard = attach_keyboard(world, source)
-    return keyboard
+    return _keyboards.get(world)
