@@ -33,7 +33,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterable, Mapping, Protocol
 
-from .input_service import PerWorld, StepPolledDevice
+from .input_service import StepPolledDevice
 
 STICK_AXES = ("Left Stick X Axis", "Left Stick Y Axis", "Right Stick X Axis", "Right Stick Y Axis")
 TRIGGERS = ("Left Trigger", "Right Trigger")
@@ -186,9 +186,9 @@ def scripted_pad(path: str | Path | None, specs: Iterable[str] = ()) -> Scripted
 class Gamepad(StepPolledDevice[PadSnapshot]):
     """The gamepad state of one world: polls its source once per physics step and remembers values."""
 
-    def __init__(self, source: PadSource):
+    def __init__(self, source: PadSource, world):
         self._values: dict[tuple[int, str], float] = {}
-        super().__init__(source)
+        super().__init__(source, world)
 
     def _advance(self, step: int, changes: tuple) -> PadSnapshot:
         for pad, element, value in changes:
@@ -199,14 +199,11 @@ class Gamepad(StepPolledDevice[PadSnapshot]):
         self._values.clear()
 
 
-_gamepads: PerWorld[Gamepad] = PerWorld(lambda world: Gamepad(NeutralPad()))
-
-
 def attach_gamepad(world, source: PadSource) -> Gamepad:
     """Make *source* the gamepad of *world* (replacing any earlier one)."""
-    return _gamepads.attach(world, Gamepad(source))
+    return world.services.add(Gamepad(source, world))
 
 
 def gamepad_for(world) -> Gamepad:
-    """The gamepad attached to *world*; by default one neutral pad."""
-    return _gamepads.get(world)
+    """The gamepad of *world*; by default one neutral pad."""
+    return world.services.require(Gamepad, lambda: Gamepad(NeutralPad(), world))

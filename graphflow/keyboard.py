@@ -1,11 +1,11 @@
 """Keyboard input for graphs: one key-state service per world, fed by a pluggable source.
 
 ``OnKeyboardInput`` nodes never talk to a device. They ask
-``keyboard_for(db.world)`` for the tick's ``KeySnapshot``: the ordered key
-transitions since the previous physics step and the keys held now. The
-``Keyboard`` polls its source at most once per physics step (keyed on
-``world.step_index``), so every node of every graph instance sees the same
-events in the same tick, whoever asks first.
+``keyboard_for(db.world)`` (a service the world owns) for the tick's
+``KeySnapshot``: the ordered key transitions since the previous physics step
+and the keys held now. The ``Keyboard`` polls its source at most once per
+physics step, so every node of every graph instance sees the same events in
+the same tick, whoever asks first.
 
 Sources (all return ordered ``(key, is_down)`` transitions for a poll at a
 simulated time, never reading the wall clock):
@@ -13,8 +13,8 @@ simulated time, never reading the wall clock):
 * ``ScriptedKeys`` - a timeline for headless runs and tests
   (``graphflow run --keys FILE`` / ``--key A@1.5``);
 * ``graphflow.physics.keyboard.PyBulletKeys`` - the PyBullet GUI window;
-* nothing attached: a PyBullet world is read through PyBulletKeys (its GUI
-  window; DIRECT clients report no keys), any other world has no keys.
+* nothing attached: the world's own window keys (``world.window_keys()``:
+  the PyBullet window; DIRECT clients report no keys), else no keys.
 
 Key names are Kit's ``carb.input.KeyboardInput`` tokens (``A``, ``Key1``,
 ``Up``, ``PageDown``, ``LeftShift``...), as in OmniGraph's ``inputs:keyIn``.
@@ -27,7 +27,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterable, Protocol
 
-from .input_service import PerWorld, StepPolledDevice
+from .input_service import StepPolledDevice
 
 LETTERS = tuple(chr(code) for code in range(ord("A"), ord("Z") + 1))
 DIGITS = tuple(f"Key{digit}" for digit in range(10))
@@ -175,9 +175,9 @@ def scripted_keys(path: str | Path | None, specs: Iterable[str] = ()) -> Scripte
 class Keyboard(StepPolledDevice[KeySnapshot]):
     """The key state of one world: polls its source once per physics step and remembers held keys."""
 
-    def __init__(self, source: KeySource):
+    def __init__(self, source: KeySource, world):
         self._held: set[str] = set()
-        super().__init__(source)
+        super().__init__(source, world)
 
     def _advance(self, step: int, transitions: tuple) -> KeySnapshot:
         held_before = frozenset(self._held)
@@ -189,25 +189,11 @@ class Keyboard(StepPolledDevice[KeySnapshot]):
         self._held.clear()
 
 
-def _default_keyboard(world) -> Keyboard:
-    """A PyBullet world's window (empty in DIRECT), else no keys."""
-    client = getattr(world, "client", None)
-    events = getattr(client, "getKeyboardEvents", None)
-    if events is not None:
-        from graphflow.physics.keyboard import PyBulletKeys
-
-        return Keyboard(PyBulletKeys(events))
-    return Keyboard(NoKeys())
-
-
-_keyboards: PerWorld[Keyboard] = PerWorld(_default_keyboard)
-
-
 def attach_keyboard(world, source: KeySource) -> Keyboard:
     """Make *source* the keyboard of *world* (replacing any earlier one)."""
-    return _keyboards.attach(world, Keyboard(source))
+    return world.services.add(Keyboard(source, world))
 
 
 def keyboard_for(world) -> Keyboard:
-    """The keyboard attached to *world*; by default a PyBullet world's window, else no keys."""
-    return _keyboards.get(world)
+    """The keyboard of *world*; by default its window's keys (``world.window_keys()``), else no keys."""
+    return world.services.require(Keyboard, lambda: Keyboard(world.window_keys() or NoKeys(), world))

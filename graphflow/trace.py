@@ -72,9 +72,10 @@ def phase_outputs(compiled) -> list[str]:
 
 
 def surface_gripper_manager(world):
-    """The world's surface-gripper manager (``world.surface_grippers``), or None when no node made one."""
-    manager = getattr(world, "surface_grippers", None)
-    return manager if hasattr(manager, "get_gripper_status") else None
+    """The world's surface-gripper manager service, or None when no node made one."""
+    from graphflow.gripper.manager import SurfaceGripperManager
+
+    return world.services.get(SurfaceGripperManager)
 
 
 @dataclass(frozen=True)

@@ -6,12 +6,65 @@ without importing any physics engine: ``graphflow.physics`` implements
 ``World`` on PyBullet, ``ClockWorld`` below serves graphs that name no stage.
 
 Tick order (documented in docs/architecture.md): ``world.step()`` advances
-physics one step and then runs the post-step services (the surface-gripper
-manager); after that every graph instance ticks once.
+physics one step and then steps the world's services (surface-gripper manager,
+keyboard, gamepad, recorder, ...) in the order they were added; after that
+every graph instance ticks once.
 """
 from __future__ import annotations
 
-from typing import Callable, Protocol, Sequence, runtime_checkable
+from typing import Callable, Protocol, Sequence, TypeVar, runtime_checkable
+
+ServiceT = TypeVar("ServiceT")
+
+
+@runtime_checkable
+class WorldService(Protocol):
+    """Something a world owns: stepped right after every physics step, reset with the world."""
+
+    def after_step(self, dt: float) -> None: ...
+
+    def reset(self) -> None: ...
+
+
+class Services:
+    """The services of one world, one per kind (their class), stepped and reset in the order they were added.
+
+    A world owns exactly one ``Services``; a service is found by its kind
+    (``world.services.get(Keyboard)``) or created on first use
+    (``world.services.require(Keyboard, make)``), never by attributes set on the
+    world from outside or by module-level tables.
+    """
+
+    def __init__(self):
+        self._by_kind: dict[type, WorldService] = {}
+
+    def add(self, service: ServiceT, kind: type | None = None) -> ServiceT:
+        """Add *service* as the world's one service of *kind* (default: its class), replacing any earlier one."""
+        kind = kind or type(service)
+        self._by_kind.pop(kind, None)
+        self._by_kind[kind] = service
+        return service
+
+    def get(self, kind: type[ServiceT]) -> ServiceT | None:
+        return self._by_kind.get(kind)
+
+    def require(self, kind: type[ServiceT], make: Callable[[], ServiceT]) -> ServiceT:
+        """The service of *kind*, made by ``make()`` and added on first use."""
+        service = self._by_kind.get(kind)
+        if service is None:
+            service = self.add(make(), kind)
+        return service
+
+    def __iter__(self):
+        return iter(list(self._by_kind.values()))
+
+    def after_step(self, dt: float) -> None:
+        for service in list(self._by_kind.values()):
+            service.after_step(dt)
+
+    def reset(self) -> None:
+        for service in list(self._by_kind.values()):
+            service.reset()
 
 
 class WorldError(RuntimeError):
@@ -26,14 +79,13 @@ class World(Protocol):
     time: float          # simulated seconds since the last reset
     step_index: int      # physics steps since the last reset
 
+    services: Services   # owned by the world: stepped after each physics step, reset with it
+
     def step(self) -> None:
-        """Advance physics one step, then run the post-step services."""
+        """Advance physics one step, then step the services."""
 
     def reset(self) -> None:
-        """Return to the initial state, bit for bit."""
-
-    def add_post_step_service(self, service: Callable[[float], None]) -> None:
-        """Run ``service(dt)`` right after every physics step, in registration order."""
+        """Return to the initial state, bit for bit, and reset the services."""
 
     # node-facing queries and actions (prim paths in, plain Python values out)
     def prim_pose(self, path: str) -> tuple[tuple[float, float, float], tuple[float, float, float, float]]: ...
@@ -47,6 +99,8 @@ class World(Protocol):
                           efforts: Sequence[float] | None = None) -> None: ...
     def get_attribute(self, prim_path: str, name: str): ...
     def set_attribute(self, prim_path: str, name: str, value) -> None: ...
+    def window_keys(self):
+        """The key source of the world's window (``poll(time) -> [(key, is_down)]``), or None without one."""
 
 
 class ClockWorld:
@@ -58,20 +112,20 @@ class ClockWorld:
         self.time_step = time_step
         self.time = 0.0
         self.step_index = 0
-        self._services: list[Callable[[float], None]] = []
+        self.services = Services()
 
     def step(self) -> None:
         self.step_index += 1
         self.time = self.step_index * self.time_step
-        for service in self._services:
-            service(self.time_step)
+        self.services.after_step(self.time_step)
 
     def reset(self) -> None:
         self.time = 0.0
         self.step_index = 0
+        self.services.reset()
 
-    def add_post_step_service(self, service: Callable[[float], None]) -> None:
-        self._services.append(service)
+    def window_keys(self):
+        return None
 
     def _no_physics(self, *_args, **_kwargs):
         raise WorldError("this graph names no stage, so there are no prims to read or write")

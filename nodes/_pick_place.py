@@ -140,10 +140,7 @@ class UR10Arm:
 
 
 def gripper_manager(world):
-    """The world's surface-gripper manager (``world.surface_grippers`` once created)."""
-    existing = getattr(world, "surface_grippers", None)
-    if existing is not None:
-        return existing
+    """The world's surface-gripper manager (a service of the world, created on first use)."""
     from graphflow.gripper.manager import manager_for
 
     return manager_for(world)

@@ -40,7 +40,7 @@ SPEC = NodeSpec(
 
 
 def compute(db):
-    snapshot = gamepad_for(db.world).snapshot(db.world)
+    snapshot = gamepad_for(db.world).snapshot()
     pad = db.inputs.gamepadId
     if pad not in snapshot.connected:
         db.error(f"inputs:gamepadId: no gamepad {pad} (connected: {', '.join(map(str, sorted(snapshot.connected)))})")

@@ -47,7 +47,7 @@ SPEC = NodeSpec(
 
 
 def compute(db):
-    snapshot = keyboard_for(db.world).snapshot(db.world)
+    snapshot = keyboard_for(db.world).snapshot()
     if snapshot.step != db.state.lastStep:
         db.state.lastStep = snapshot.step
         _handle(db, snapshot)

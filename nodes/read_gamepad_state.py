@@ -32,7 +32,7 @@ SPEC = NodeSpec(
 
 
 def compute(db):
-    snapshot = gamepad_for(db.world).snapshot(db.world)
+    snapshot = gamepad_for(db.world).snapshot()
     pad, element = db.inputs.gamepadId, db.inputs.gamepadElement
     if pad not in snapshot.connected:
         db.error(f"inputs:gamepadId: no gamepad {pad} (connected: {', '.join(map(str, sorted(snapshot.connected)))})")

@@ -133,8 +133,8 @@ class SurfaceGripperManager:
 
     # -- world hooks --
 
-    def __call__(self, dt: float) -> None:
-        """The post-step service: compliance, then every gripper's update, then queued attach/detach."""
+    def after_step(self, dt: float) -> None:
+        """The world service's step: compliance, then every gripper's update, then queued attach/detach."""
         self._refresh()
         self.backend.update(dt)
         for component in self.components.values():
@@ -291,16 +291,10 @@ class SurfaceGripperManager:
 
 
 def manager_for(world) -> SurfaceGripperManager:
-    """The world's surface-gripper manager, created on first use and registered as a post-step service.
+    """The world's surface-gripper manager: a service of the world, created on first use."""
+    def make() -> SurfaceGripperManager:
+        from graphflow.physics.attachment import WorldAttachmentBackend
 
-    It is also stored as ``world.surface_grippers`` so nodes reach it from ``db.world``.
-    """
-    existing = getattr(world, "surface_grippers", None)
-    if isinstance(existing, SurfaceGripperManager):
-        return existing
-    from graphflow.physics.attachment import WorldAttachmentBackend
+        return SurfaceGripperManager(world, WorldAttachmentBackend(world), world.stage)
 
-    manager = SurfaceGripperManager(world, WorldAttachmentBackend(world), world.stage)
-    world.surface_grippers = manager
-    world.add_post_step_service(manager)
-    return manager
+    return world.services.require(SurfaceGripperManager, make)

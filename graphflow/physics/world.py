@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 import shutil
 import tempfile
-from typing import Callable, NamedTuple, Sequence
+from typing import NamedTuple, Sequence
 
 import numpy as np
 import pybullet
@@ -15,7 +15,7 @@ from pybullet_utils.bullet_client import BulletClient
 
 from graphflow.usd.description import StageDescription
 from graphflow.usd.transforms import IDENTITY_POSE, Pose, compose, invert, quat_rotate, relative
-from graphflow.world import WorldError
+from graphflow.world import Services, WorldError
 
 from .native_output import native_stdout_silenced
 from .builder import ArticulationHandle, BodyHandle, BuiltScene, SceneBuilder
@@ -106,7 +106,7 @@ class PyBulletWorld:
         except pybullet.error as error:
             raise WorldError(f"cannot open a PyBullet {'GUI' if gui else 'DIRECT'} client: {error}") from None
         self._mesh_directory = tempfile.mkdtemp(prefix="graphflow-meshes-")
-        self._services: list[Callable[[float], None]] = []
+        self.services = Services()
         self._closed = False
         self._build()
 
@@ -141,20 +141,14 @@ class PyBulletWorld:
         self.playing = False
 
     def reset(self) -> None:
-        """Rebuild from the parsed stage (bit-exact initial state), then reset the post-step services."""
+        """Rebuild from the parsed stage (bit-exact initial state), then reset the services."""
         self._build()
         self.time = 0.0
         self.step_index = 0
-        for service in self._services:
-            reset = getattr(service, "reset", None)
-            if callable(reset):
-                reset()
-
-    def add_post_step_service(self, service: Callable[[float], None]) -> None:
-        self._services.append(service)
+        self.services.reset()
 
     def step(self) -> None:
-        """One fixed step (``substeps`` PyBullet steps), then the post-step services. No-op while paused."""
+        """One fixed step (``substeps`` PyBullet steps), then the services. No-op while paused."""
         if not self.playing:
             return
         for _ in range(self.substeps):
@@ -163,8 +157,13 @@ class PyBulletWorld:
         self._pending_forces = []
         self.step_index += 1
         self.time = self.step_index * self.time_step
-        for service in self._services:
-            service(self.time_step)
+        self.services.after_step(self.time_step)
+
+    def window_keys(self):
+        """The PyBullet window's keys (a DIRECT client reports none)."""
+        from .keyboard import PyBulletKeys
+
+        return PyBulletKeys(self.client.getKeyboardEvents)
 
     def close(self) -> None:
         if not self._closed:

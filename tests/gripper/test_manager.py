@@ -16,7 +16,8 @@ def world():
 
 def test_one_manager_per_world_reachable_from_the_world(world):
     manager = manager_for(world)
-    assert manager_for(world) is manager and world.surface_grippers is manager
+    assert manager_for(world) is manager and world.services.get(type(manager)) is manager
+    assert list(world.services) == [manager]
 
 
 def test_write_to_usd_is_off_by_default(world):

@@ -75,25 +75,32 @@ def test_reset_replays_the_same_trajectory_bit_for_bit():
         assert trajectory_digest(fresh, 240) == first
 
 
-def test_reset_restores_targets_and_calls_service_reset_hooks():
+def test_reset_restores_targets_and_resets_services_in_order():
     calls = []
 
     class Service:
-        def __call__(self, dt):
-            calls.append(("step", dt))
+        def __init__(self, name):
+            self.name = name
+
+        def after_step(self, dt):
+            calls.append((self.name, dt))
 
         def reset(self):
-            calls.append(("reset",))
+            calls.append((self.name, "reset"))
+
+    class Other(Service):
+        pass
 
     with create_world(PICK_PLACE) as world:
-        world.add_post_step_service(Service())
-        world.add_post_step_service(lambda dt: calls.append(("plain", dt)))
+        world.services.add(Service("first"))
+        world.services.add(Other("second"))
         world.set_attribute("/World/ur10/base_link/shoulder_pan_joint", "drive:angular:physics:targetPosition", 10.0)
         world.step()
         world.reset()
         assert world.get_attribute("/World/ur10/base_link/shoulder_pan_joint",
                                    "drive:angular:physics:targetPosition") == pytest.approx(-90.0)
-    assert calls == [("step", pytest.approx(1 / 60)), ("plain", pytest.approx(1 / 60)), ("reset",)]
+    assert calls == [("first", pytest.approx(1 / 60)), ("second", pytest.approx(1 / 60)),
+                     ("first", "reset"), ("second", "reset")]
 
 
 def test_two_worlds_in_one_process_are_independent():

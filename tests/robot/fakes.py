@@ -1,4 +1,5 @@
 """Small stand-ins for the physics world, for unit tests of robot nodes without PyBullet."""
+from graphflow.gripper.manager import SurfaceGripperManager
 from graphflow.world import ClockWorld, WorldError
 
 
@@ -40,6 +41,12 @@ class FakeGripperManager:
         self.commands: list[tuple[int, str, str]] = []
         self.status = {path: "Open" for path in grippers}
 
+    def after_step(self, dt):
+        """Commands take effect at once here; nothing to do per step."""
+
+    def reset(self):
+        self.status = dict.fromkeys(self.grippers, "Open")
+
     def close_gripper(self, path):
         if path not in self.grippers:
             return False
@@ -65,7 +72,11 @@ class FakeUR10World(FakeArticulationWorld):
 
         self.positions["/World/ur10"] = list(UR10_DEFAULT_JOINTS)
         self.poses = {"/World/ur10": (tuple(base_position), (0.0, 0.0, 0.0, 1.0)), **(poses or {})}
-        self.surface_grippers = FakeGripperManager(self, ["/World/ur10/ee_link/SurfaceGripper"])
+        self.services.add(FakeGripperManager(self, ["/World/ur10/ee_link/SurfaceGripper"]), SurfaceGripperManager)
+
+    @property
+    def surface_grippers(self) -> "FakeGripperManager":
+        return self.services.get(SurfaceGripperManager)
 
     def prim_pose(self, path):
         if path not in self.poses:

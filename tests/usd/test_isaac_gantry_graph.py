@@ -107,7 +107,7 @@ def run(tmp_path_factory):
         ticks = []
         for _ in range(round(RUN_SECONDS / DT)):
             simulation.step()
-            snapshot = gamepad_for(world).snapshot(world)
+            snapshot = gamepad_for(world).snapshot()
             positions = dict(zip(names, world.joint_positions("/World/Claw_base")))
             ticks.append({
                 "time": world.time,
