@@ -59,3 +59,21 @@ def test_benchmark_prints_its_final_line_with_positive_figures(final_lines, name
 def test_unknown_benchmark_is_a_usage_error():
     result = subprocess.run([sys.executable, "-m", "benchmarks", "nonsense"], cwd=ROOT, capture_output=True, text=True)
     assert result.returncode == 2 and "unknown benchmark" in result.stderr
+
+
+def test_plain_pybullet_baseline_does_the_whole_pick_and_place():
+    """The raw-PyBullet baseline is the same job, not a cheaper one: it carries the cube to the place target."""
+    from benchmarks.plain_pybullet import PLACE, CUBE_START, PlainPickPlace
+
+    plain = PlainPickPlace(time_step=1 / 60, substeps=1, solver_iterations=50)
+    try:
+        lifted = 0.0
+        for _ in range(1127):                     # the graph's tick count
+            plain.step()
+            lifted = max(lifted, plain.cube_position()[2])
+        final = plain.cube_position()
+    finally:
+        plain.close()
+    assert lifted > CUBE_START[2] + 0.2                               # it was carried, not pushed
+    assert math.dist(final[:2], PLACE[:2]) < 0.005                    # set down within 5 mm of the target
+    assert final[2] == pytest.approx(PLACE[2], abs=0.002)

@@ -94,6 +94,7 @@ class PyBulletWorld:
         self.stage = stage
         self.time_step = float(chosen)
         self.substeps = int(substeps)
+        self.solver_iterations = SOLVER_ITERATIONS
         self.time = 0.0
         self.step_index = 0
         self.playing = True
@@ -115,7 +116,7 @@ class PyBulletWorld:
         client = self.client
         client.resetSimulation()
         client.setPhysicsEngineParameter(fixedTimeStep=self.time_step / self.substeps, numSubSteps=0,
-                                         numSolverIterations=SOLVER_ITERATIONS, deterministicOverlappingPairs=1)
+                                         numSolverIterations=self.solver_iterations, deterministicOverlappingPairs=1)
         client.setGravity(*self.description.gravity)
         self.scene: BuiltScene = SceneBuilder(client, self.description, self._mesh_directory).build()
         self._gravity_off = {path for path, handle in self.scene.bodies.items()
