@@ -47,12 +47,38 @@ SPEC = NodeSpec(
 )
 
 
+class _LegacyGrippers:
+    """The grippers these nodes made in one world, by node and settings (a service of the world).
+
+    The gripper a node authored stays on the stage across a world reset, as a
+    tutorial script keeps its SurfaceGripper object and calls ``post_reset()``;
+    a reset node takes it up again instead of authoring a second gripper on the
+    same end effector.
+    """
+
+    def __init__(self):
+        self.made = {}
+
+    def after_step(self, dt: float) -> None:
+        pass
+
+    def reset(self) -> None:
+        pass   # the grippers' status is reset by the surface-gripper manager; post_reset() runs on reuse
+
+
 def compute(db):
     if db.inputs.execIn != ExecState.ENABLED:
         return
     gripper = db.internal.get("gripper")
     if gripper is None:
-        gripper = db.internal["gripper"] = _create(db)
+        key = (db.node_name,) + tuple(getattr(db.inputs, a.name) for a in SPEC.inputs if not a.is_execution)
+        made = db.world.services.require(_LegacyGrippers, _LegacyGrippers).made
+        gripper = made.get(key)
+        if gripper is None:
+            gripper = made[key] = _create(db)
+        else:
+            gripper.post_reset()
+        db.internal["gripper"] = gripper
     else:
         gripper.update()
     db.outputs.gripperPrim = (gripper.gripper_path,)
@@ -65,6 +91,8 @@ def _create(db):
 
     if not db.inputs.endEffectorPrim:
         db.error("inputs:endEffectorPrim: no end effector given")
+    if getattr(db.world, "stage", None) is None:   # a ClockWorld or an empty physics world
+        db.error("inputs:endEffectorPrim: this graph names no stage to mount the gripper on")
     gripper = SurfaceGripper(
         db.inputs.endEffectorPrim[0], translate=db.inputs.translate, direction=db.inputs.direction,
         grip_threshold=db.inputs.gripThreshold, force_limit=db.inputs.forceLimit,
