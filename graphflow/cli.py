@@ -386,7 +386,7 @@ def command_new(args) -> int:
 
 
 def command_stage(args) -> int:
-    from .physics.inspect import run_stage_command
+    from .cli_stage import run_stage_command
 
     return run_stage_command(args.stage, as_json=args.json, simulate_seconds=args.simulate)
 
