@@ -141,11 +141,11 @@ class UR10Arm:
 
 
 def gripper_manager(world):
-    """The world's surface-gripper manager (a service of the world, created on first use)."""
-    if getattr(world, "stage", None) is None:   # a ClockWorld or an empty physics world: no gripper prims
-        raise WorldError("this graph names no stage, so there is no surface gripper to command")
-    from graphflow.gripper.manager import manager_for
+    """The world's surface-gripper manager (a service of the world, created on first use from its stage)."""
+    from graphflow.gripper.manager import SurfaceGripperManager, manager_for
 
+    if world.services.get(SurfaceGripperManager) is None and getattr(world, "stage", None) is None:
+        raise WorldError("this graph names no stage, so there is no surface gripper to command")
     return manager_for(world)
 
 
