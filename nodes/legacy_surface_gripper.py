@@ -52,18 +52,31 @@ class _LegacyGrippers:
 
     The gripper a node authored stays on the stage across a world reset, as a
     tutorial script keeps its SurfaceGripper object and calls ``post_reset()``;
-    a reset node takes it up again instead of authoring a second gripper on the
-    same end effector.
+    after a reset a node takes up a gripper it made before instead of authoring
+    a second one on the same end effector. Until the next reset each gripper
+    serves one node instance.
     """
 
     def __init__(self):
-        self.made = {}
+        self.made: dict[tuple, list] = {}
+        self.taken: set[int] = set()     # ids of the grippers handed out since the last reset
 
     def after_step(self, dt: float) -> None:
         pass
 
     def reset(self) -> None:
-        pass   # the grippers' status is reset by the surface-gripper manager; post_reset() runs on reuse
+        self.taken.clear()   # the grippers' status itself is reset by the surface-gripper manager
+
+    def take(self, key: tuple, make):
+        for gripper in self.made.get(key, ()):
+            if id(gripper) not in self.taken:
+                self.taken.add(id(gripper))
+                gripper.post_reset()
+                return gripper
+        gripper = make()
+        self.made.setdefault(key, []).append(gripper)
+        self.taken.add(id(gripper))
+        return gripper
 
 
 def compute(db):
@@ -72,13 +85,8 @@ def compute(db):
     gripper = db.internal.get("gripper")
     if gripper is None:
         key = (db.node_name,) + tuple(getattr(db.inputs, a.name) for a in SPEC.inputs if not a.is_execution)
-        made = db.world.services.require(_LegacyGrippers, _LegacyGrippers).made
-        gripper = made.get(key)
-        if gripper is None:
-            gripper = made[key] = _create(db)
-        else:
-            gripper.post_reset()
-        db.internal["gripper"] = gripper
+        grippers = db.world.services.require(_LegacyGrippers, _LegacyGrippers)
+        gripper = db.internal["gripper"] = grippers.take(key, lambda: _create(db))
     else:
         gripper.update()
     db.outputs.gripperPrim = (gripper.gripper_path,)
