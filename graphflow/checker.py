@@ -70,7 +70,11 @@ class NodeCheckReport:
 
 def check_node_type(node_type: NodeType | str, world: World | None = None,
                     inputs: Mapping[str, Any] | None = None, *, registry: Registry | None = None) -> NodeCheckReport:
-    """Check *node_type* (a ``NodeType`` or a registered id); raise ``NodeCheckError`` listing every problem."""
+    """Check *node_type* (a ``NodeType`` or a registered id); raise ``NodeCheckError`` listing every problem.
+
+    *inputs* are authored input values (default: none, so every input holds its
+    default). A given *world* is reset before every compute and left reset.
+    """
     if isinstance(node_type, str):
         found = (registry or default_registry()).get(node_type)
         if found is None:
