@@ -58,7 +58,7 @@ def _section(node_type: NodeType) -> list[str]:
     if spec.compatible_versions:
         lines += ["Files of typeVersion " + ", ".join(str(v) for v in spec.compatible_versions)
                   + f" load as version {spec.version}.", ""]
-    lines += [spec.description, ""]
+    lines += [_text(spec.description), ""]
     ports = [(group, a) for group, attributes in (("inputs", spec.inputs), ("outputs", spec.outputs),
                                                   ("state", spec.state)) for a in attributes]
     if not ports:
@@ -73,7 +73,7 @@ def _section(node_type: NodeType) -> list[str]:
             bounds = f"one of {len(attribute.allowed_tokens)} tokens (below)"
         description = attribute.description + (" (optional)" if attribute.optional else "")
         lines.append(f"| `{name}` | `{attribute.type}` | {_cell(_default(attribute))} | {_cell(bounds)} | "
-                     f"{_cell(description)} |")
+                     f"{_cell(_text(description))} |")
     for name, tokens in long_lists:
         lines += ["", f"`{name}` is one of: " + ", ".join(f"`{t}`" for t in tokens) + "."]
     return lines
@@ -115,8 +115,13 @@ def _plain(value):
     return value
 
 
+def _text(text: str) -> str:
+    """Prose as Markdown shows it: '<' escaped so 'a <operation> b' is not taken for an HTML tag."""
+    return text.replace("<", "&lt;")
+
+
 def _cell(text: str) -> str:
-    """Table-safe text: no line breaks, pipes escaped."""
+    """Table-safe text: one line, pipes escaped (backticked code keeps its '<')."""
     return " ".join(text.split()).replace("|", "\\|")
 
 
