@@ -326,6 +326,8 @@ def command_validate(args) -> int:
 
 
 def command_nodes(args) -> int:
+    if args.markdown or args.output:
+        return _write_node_docs(args)
     types = default_registry().types()
     if args.json:
         print(json.dumps([t.spec.to_json() for t in types], indent=2))
@@ -334,6 +336,24 @@ def command_nodes(args) -> int:
     for node_type in types:
         summary = node_type.spec.description.split(". ")[0].rstrip(".")
         print(f"{node_type.spec.id:<{width}}  v{node_type.spec.version}  {summary}")
+    return EXIT_OK
+
+
+def _write_node_docs(args) -> int:
+    from .nodedocs import render_markdown, write_markdown
+
+    if not args.markdown or args.json:
+        raise BadInput("nodes: -o/--output writes the Markdown reference: use it with --markdown (and without --json)")
+    if not args.output:
+        sys.stdout.write(render_markdown())
+        return EXIT_OK
+    try:
+        write_markdown(args.output, force=args.force)
+    except FileExistsError as error:
+        raise BadInput(str(error)) from None
+    except OSError as error:
+        raise BadInput(f"{args.output}: cannot write: {error.strerror or error}") from None
+    print(f"wrote {args.output}")
     return EXIT_OK
 
 
@@ -366,7 +386,7 @@ def command_new(args) -> int:
 
 
 def command_stage(args) -> int:
-    from .physics.inspect import run_stage_command
+    from .cli_stage import run_stage_command
 
     return run_stage_command(args.stage, as_json=args.json, simulate_seconds=args.simulate)
 
@@ -447,6 +467,10 @@ def build_parser() -> argparse.ArgumentParser:
 
     nodes = commands.add_parser("nodes", help="list the registered node types")
     nodes.add_argument("--json", action="store_true", help="print every node spec as JSON")
+    nodes.add_argument("--markdown", action="store_true",
+                       help="print the node reference page (docs/nodes.md) generated from the specs")
+    nodes.add_argument("-o", "--output", metavar="FILE", help="with --markdown: write the page to FILE atomically")
+    nodes.add_argument("--force", action="store_true", help="overwrite an existing --output file")
     nodes.set_defaults(handler=command_nodes)
 
     new = commands.add_parser("new", help="write a starter graph")

@@ -29,7 +29,7 @@ from .document import GraphDocument
 from .registry import Registry, default_registry
 from .spec import NodeSpec, NodeType
 from .types import ExecState, parse_type
-from .world import ClockWorld, World
+from .world import DEFAULT_TIME_STEP, ClockWorld, World
 
 DEFAULT_STEP_BUDGET = 100_000
 KEPT_LOG_EVENTS = 10_000   # the event log keeps the newest lines so long runs stay flat in memory
@@ -293,7 +293,7 @@ class GraphInstance:
                  on_log: Callable[[LogEvent], None] | None = None,
                  observer: Any = None):
         self.compiled = compiled
-        self.world = world if world is not None else ClockWorld(compiled.document.settings.get("timeStep", 1 / 60))
+        self.world = world if world is not None else ClockWorld(compiled.document.settings.get("timeStep", DEFAULT_TIME_STEP))
         self.on_log = on_log
         self.observer = observer   # optional: .on_compute(tick, node_name, fired: list[str]) for traces
         self._databases = [NodeDatabase(self, node) for node in compiled.nodes]

@@ -13,9 +13,8 @@ from typing import Callable
 from .document import GraphDocument, load_document
 from .executor import CompiledGraph, GraphInstance, LogEvent
 from .registry import Registry, default_registry
-from .world import ClockWorld, World
+from .world import DEFAULT_TIME_STEP, ClockWorld, World
 
-DEFAULT_TIME_STEP = 1.0 / 60.0
 _compiled_graphs: "weakref.WeakValueDictionary[tuple[int, int], CompiledGraph]" = weakref.WeakValueDictionary()
 
 

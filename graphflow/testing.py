@@ -14,7 +14,7 @@ from .executor import CompiledGraph, GraphInstance
 from .registry import Registry
 from .runtime import Simulation
 from .types import ExecState
-from .world import ClockWorld, World
+from .world import DEFAULT_TIME_STEP, ClockWorld, World
 
 HARNESS_NODE = "node"
 
@@ -36,7 +36,7 @@ class NodeHarness:
     """One node of a given type, computed on demand (pulses name the exec inputs that fire)."""
 
     def __init__(self, type_id: str, inputs: Mapping[str, Any] | None = None, *,
-                 world: World | None = None, time_step: float = 1.0 / 60.0,
+                 world: World | None = None, time_step: float = DEFAULT_TIME_STEP,
                  type_version: int | None = None, registry: Registry | None = None):
         node = {"name": HARNESS_NODE, "type": type_id, "inputs": dict(inputs or {})}
         if type_version is not None:

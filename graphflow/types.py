@@ -15,7 +15,6 @@ attributes and PyBullet.
 """
 from __future__ import annotations
 
-import math
 import re
 from dataclasses import dataclass
 from enum import IntEnum
@@ -79,10 +78,6 @@ class AttrType:
     @property
     def is_target(self) -> bool:
         return self.base == "target"
-
-    @property
-    def is_numeric(self) -> bool:
-        return SCALAR_KINDS.get(self.base) in ("int", "uint", "real")
 
     def default_value(self):
         """The value an unset attribute of this type holds."""
@@ -220,7 +215,3 @@ def can_connect(source: AttrType, destination: AttrType) -> bool:
         return True
     numeric = ("int", "uint", "real")
     return source_kind in numeric and destination_kind in numeric and destination_kind != "bool"
-
-
-def is_finite_number(value) -> bool:
-    return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)

@@ -16,6 +16,8 @@ from typing import Callable, Protocol, Sequence, TypeVar, runtime_checkable
 
 ServiceT = TypeVar("ServiceT")
 
+DEFAULT_TIME_STEP = 1.0 / 60.0   # seconds; Isaac Sim's default physics rate, used when neither graph nor stage sets one
+
 
 @runtime_checkable
 class WorldService(Protocol):
@@ -106,7 +108,7 @@ class World(Protocol):
 class ClockWorld:
     """A world with no physics: a fixed-step clock, for graphs that name no stage."""
 
-    def __init__(self, time_step: float = 1.0 / 60.0):
+    def __init__(self, time_step: float = DEFAULT_TIME_STEP):
         if not time_step > 0:
             raise ValueError(f"time step must be positive, got {time_step}")
         self.time_step = time_step

@@ -14,6 +14,7 @@ import math
 from graphflow.spec import Attribute
 from graphflow.types import ExecState
 from graphflow.usd.transforms import relative
+from graphflow.world import WorldError
 
 UR10_EVENTS_DT = (0.01, 0.0035, 0.01, 1.0, 0.008, 0.005, 0.005, 1.0, 0.01, 0.08)
 PHASE_COUNT = 10
@@ -140,9 +141,11 @@ class UR10Arm:
 
 
 def gripper_manager(world):
-    """The world's surface-gripper manager (a service of the world, created on first use)."""
-    from graphflow.gripper.manager import manager_for
+    """The world's surface-gripper manager (a service of the world, created on first use from its stage)."""
+    from graphflow.gripper.manager import SurfaceGripperManager, manager_for
 
+    if world.services.get(SurfaceGripperManager) is None and getattr(world, "stage", None) is None:
+        raise WorldError("this graph names no stage, so there is no surface gripper to command")
     return manager_for(world)
 
 

@@ -47,12 +47,46 @@ SPEC = NodeSpec(
 )
 
 
+class _LegacyGrippers:
+    """The grippers these nodes made in one world, by node and settings (a service of the world).
+
+    The gripper a node authored stays on the stage across a world reset, as a
+    tutorial script keeps its SurfaceGripper object and calls ``post_reset()``;
+    after a reset a node takes up a gripper it made before instead of authoring
+    a second one on the same end effector. Until the next reset each gripper
+    serves one node instance.
+    """
+
+    def __init__(self):
+        self.made: dict[tuple, list] = {}
+        self.taken: set[int] = set()     # ids of the grippers handed out since the last reset
+
+    def after_step(self, dt: float) -> None:
+        pass
+
+    def reset(self) -> None:
+        self.taken.clear()   # the grippers' status itself is reset by the surface-gripper manager
+
+    def take(self, key: tuple, make):
+        for gripper in self.made.get(key, ()):
+            if id(gripper) not in self.taken:
+                self.taken.add(id(gripper))
+                gripper.post_reset()
+                return gripper
+        gripper = make()
+        self.made.setdefault(key, []).append(gripper)
+        self.taken.add(id(gripper))
+        return gripper
+
+
 def compute(db):
     if db.inputs.execIn != ExecState.ENABLED:
         return
     gripper = db.internal.get("gripper")
     if gripper is None:
-        gripper = db.internal["gripper"] = _create(db)
+        key = (db.node_name,) + tuple(getattr(db.inputs, a.name) for a in SPEC.inputs if not a.is_execution)
+        grippers = db.world.services.require(_LegacyGrippers, _LegacyGrippers)
+        gripper = db.internal["gripper"] = grippers.take(key, lambda: _create(db))
     else:
         gripper.update()
     db.outputs.gripperPrim = (gripper.gripper_path,)
@@ -65,6 +99,8 @@ def _create(db):
 
     if not db.inputs.endEffectorPrim:
         db.error("inputs:endEffectorPrim: no end effector given")
+    if getattr(db.world, "stage", None) is None:   # a ClockWorld or an empty physics world
+        db.error("inputs:endEffectorPrim: this graph names no stage to mount the gripper on")
     gripper = SurfaceGripper(
         db.inputs.endEffectorPrim[0], translate=db.inputs.translate, direction=db.inputs.direction,
         grip_threshold=db.inputs.gripThreshold, force_limit=db.inputs.forceLimit,

@@ -15,12 +15,11 @@ from pybullet_utils.bullet_client import BulletClient
 
 from graphflow.usd.description import StageDescription
 from graphflow.usd.transforms import IDENTITY_POSE, Pose, compose, invert, quat_rotate, relative
-from graphflow.world import Services, WorldError
+from graphflow.world import DEFAULT_TIME_STEP, Services, WorldError
 
 from .native_output import native_stdout_silenced
 from .builder import ArticulationHandle, BodyHandle, BuiltScene, SceneBuilder
 
-DEFAULT_TIME_STEP = 1.0 / 60.0      # Isaac Sim's default physics rate
 SOLVER_ITERATIONS = 50              # PyBullet's default, stated so it stays fixed
 MOTOR_MAX_FORCE = 1.0e9             # N or N m: a floating-base drive without a force limit
 

@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 
 from graphflow.physics import create_world, resolve_stage
-from graphflow.physics.inspect import run_stage_command
+from graphflow.cli_stage import run_stage_command
 
 ISAAC_GANTRY = Path(__file__).resolve().parents[2] / ".." / "shared" / "usda_samples" / \
     "isaacsim_SurfaceGripper_gantry.usda"
