@@ -42,6 +42,10 @@ _LATENT_PUSH = ExecState.LATENT_PUSH
 _LATENT_FINISH = ExecState.LATENT_FINISH
 
 
+def _discard(_entry) -> None:
+    """Where ``compute_node`` sends the entries a compute enables: nowhere."""
+
+
 class GraphRuntimeError(RuntimeError):
     """A run-time failure naming the node (exit code 1 from the CLI)."""
 
@@ -392,14 +396,18 @@ class GraphInstance:
         self._tick_epoch = self._exec_epoch
         self._epoch_tick = self.tick_count
 
-    def _run_from(self, entry: tuple[int, tuple[str, ...]]) -> None:
+    def _run_from(self, entry: tuple[int, tuple[str, ...]], push=None) -> None:
         """Drain the exec stack from one entry: compute a node, then push what its exec outputs enabled.
 
-        The compute is ``_compute`` written out in the loop (this is the hot path): keep the two in step.
+        The one compute path (this is the hot path: locals only). *push*, when given, receives the
+        entries the node's exec outputs enable instead of the stack: ``compute_node`` discards them,
+        so exactly one node computes, with the same pulls, pins, latent bookkeeping and counts as a tick.
         """
         compiled = self.compiled
         stack = [entry]
-        pop, push = stack.pop, stack.append
+        pop = stack.pop
+        if push is None:
+            push = stack.append
         computes, databases = self._computes, self._databases
         input_dicts, output_dicts, pulls = self._input_dicts, self._output_dicts, self._pulls
         pull_programs = self._pull_programs
@@ -461,41 +469,10 @@ class GraphInstance:
         index = self.compiled.index_of[node_name]
         if self._epoch_tick != self.tick_count:   # the harness advanced tick_count itself
             self._start_tick_epoch()
-        self._compute(index, tuple(pins))
-        outputs = self._output_dicts[index]
-        for name in self.compiled.exec_output_names[index]:
-            if outputs[name] == _LATENT_PUSH:
-                self._latent[index] = None
-            elif outputs[name] == _LATENT_FINISH:
-                self._latent.pop(index, None)
-
-    def _compute(self, index: int, pins: tuple[str, ...]) -> None:
-        """Compute an exec node: pull (computing stale pure upstream nodes), set exec pins, call compute."""
-        pull = self._pull_programs[index]
-        if pull is None and self.compiled.is_pure[index]:   # a pure node computed on its own (test harness)
-            pull = self._pull_programs[index] = self._bind_pull(index)
-        if pull is not None:
-            pull(self._tick_epoch, self._exec_epoch)
-        for inputs, name, source, source_name in self._pulls[index]:
-            inputs[name] = source[source_name]
-        inputs, outputs = self._input_dicts[index], self._output_dicts[index]
-        compiled = self.compiled
-        for name in compiled.exec_input_names[index]:
-            inputs[name] = _ENABLED if name in pins else _DISABLED
-        for name in compiled.exec_output_names[index]:
-            outputs[name] = _DISABLED
-        self._exec_epoch += 1
-        self._last_exec_compute[index] = self._exec_epoch
-        self.compute_counts[index] += 1
-        database = self._databases[index]
-        try:
-            self._computes[index](database)
-        except GraphRuntimeError:
-            raise
-        except Exception as error:
-            raise self._failure(index, error) from error
-        if self.observer is not None:
-            self._observe(index)
+            self._computes_this_tick = 0
+        if self._pull_programs[index] is None and self.compiled.is_pure[index]:
+            self._pull_programs[index] = self._bind_pull(index)   # a pure node computed on its own
+        self._run_from((index, tuple(pins)), push=_discard)
 
     def _observe(self, index: int) -> None:
         outputs = self._output_dicts[index]
