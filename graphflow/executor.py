@@ -26,9 +26,9 @@ from typing import Any, Callable
 import networkx as nx
 
 from .document import GraphDocument
-from .registry import Registry, default_registry
+from .registry import Registry
 from .spec import NodeSpec, NodeType
-from .types import ExecState, parse_type
+from .types import ExecState
 from .world import ClockWorld, World
 
 DEFAULT_STEP_BUDGET = 100_000
@@ -74,7 +74,7 @@ class CompiledNode:
     node_type: NodeType
     authored: tuple[tuple[str, Any], ...]          # coerced authored input values
     pulls: tuple[tuple[str, int, str], ...]        # (input name, source node index, source output name)
-    pure_schedule: tuple[int, ...]                 # pure upstream nodes in topological order
+    pure_schedule: tuple[int, ...]                 # pure upstream nodes in topological order (exec nodes; () for pure)
     exec_targets: tuple[tuple[str, tuple[tuple[int, str], ...]], ...]  # per exec output: (dst index, dst exec input)
 
     @property
@@ -83,37 +83,30 @@ class CompiledNode:
 
 
 class CompiledGraph:
-    """Immutable evaluation tables built from a document and a registry."""
+    """Immutable evaluation tables of a document whose checks passed.
 
-    def __init__(self, document: GraphDocument, registry: Registry | None = None):
-        registry = registry or default_registry()
+    Made only by ``graphflow.compiler.compile``, which checks the document and hands over what it
+    resolved: node types, coerced authored inputs, the valid connections as per-node pulls and exec
+    fan-out, the data graph over node indices, and the variables' types and initial values.
+    """
+
+    def __init__(self, document: GraphDocument, registry: Registry, *, node_types: tuple[NodeType, ...],
+                 authored: tuple[tuple[tuple[str, Any], ...], ...], pulls: list[list[tuple[str, int, str]]],
+                 exec_edges: list[dict[str, list[tuple[int, str]]]], data_graph: nx.DiGraph,
+                 variable_types: dict, variable_defaults: dict):
         self.document = document
         self.registry = registry
-        index_of = {node.name: i for i, node in enumerate(document.nodes)}
-        node_types = [registry.get(node.type) for node in document.nodes]
-        pulls: list[list[tuple[str, int, str]]] = [[] for _ in document.nodes]
-        exec_edges: list[dict[str, list[tuple[int, str]]]] = [{} for _ in document.nodes]
-        data_graph = nx.DiGraph()
-        data_graph.add_nodes_from(range(len(document.nodes)))
-        for connection in document.connections:
-            src, dst = index_of[connection.src_node], index_of[connection.dst_node]
-            src_name, dst_name = connection.src_attr.split(":", 1)[1], connection.dst_attr.split(":", 1)[1]
-            if node_types[dst].spec.attribute(connection.dst_attr).is_execution:
-                exec_edges[src].setdefault(src_name, []).append((dst, dst_name))
-            else:
-                pulls[dst].append((dst_name, src, src_name))
-                data_graph.add_edge(src, dst)
         pure = [t.spec.is_pure for t in node_types]
         self.is_pure = tuple(pure)
+        self._data_graph = data_graph   # for the schedules of pure nodes computed on their own (compute_node)
         self.nodes: tuple[CompiledNode, ...] = tuple(
             CompiledNode(
                 index=i,
                 name=node.name,
                 node_type=node_types[i],
-                authored=tuple((name, node_types[i].spec.attribute(f"inputs:{name}").check(value))
-                               for name, value in node.inputs.items()),
+                authored=authored[i],
                 pulls=tuple(pulls[i]),
-                pure_schedule=_pure_schedule(data_graph, i, pure),
+                pure_schedule=() if pure[i] else _pure_schedule(data_graph, i, pure),
                 exec_targets=tuple((a.name, tuple(exec_edges[i].get(a.name, ()))) for a in node_types[i].spec.exec_outputs),
             )
             for i, node in enumerate(document.nodes)
@@ -130,13 +123,12 @@ class CompiledGraph:
                   for name, targets in reversed(n.exec_targets))
             for n in self.nodes)
         # exec nodes each pure node depends on (through other pure nodes): their computes invalidate it
+        exec_ancestors = _exec_ancestors(data_graph, pure)
         self.pure_exec_dependencies = tuple(
-            tuple(sorted(j for j in nx.ancestors(data_graph, i) if not pure[j])) if pure[i] else ()
-            for i in range(len(self.nodes)))
-        self.index_of = index_of
-        self.variable_types = {v.name: parse_type(v.type) for v in document.variables}
-        self.variable_defaults = {v.name: (parse_type(v.type).coerce(v.default) if v.default is not None
-                                           else parse_type(v.type).default_value()) for v in document.variables}
+            tuple(sorted(exec_ancestors[i])) if pure[i] else () for i in range(len(self.nodes)))
+        self.index_of = {node.name: i for i, node in enumerate(document.nodes)}
+        self.variable_types = variable_types
+        self.variable_defaults = variable_defaults
         self.step_budget = int(document.settings.get("stepBudget", DEFAULT_STEP_BUDGET))
         # the names pull programs use for node i's input dict, output dict, compute and database
         self.program_names = tuple((f"in{i}", f"out{i}", f"compute{i}", f"db{i}") for i in range(len(self.nodes)))
@@ -165,10 +157,12 @@ class CompiledGraph:
         ``counts`` lists, ``failure`` and ``GraphRuntimeError``. Only indices and repr() of names
         reach the source, so no text from a graph file can become code.
         """
-        if not node.pure_schedule:
+        schedule = _pure_schedule(self._data_graph, node.index, self.is_pure) if self.is_pure[node.index] \
+            else node.pure_schedule
+        if not schedule:
             return ""
         lines = [f"def pull(tick_epoch, epoch):  # pure nodes pulled by {node.name!r}", "    node = -1", "    try:"]
-        for i in node.pure_schedule:
+        for i in schedule:
             pure_node = self.nodes[i]
             stale = f"stamps[{i}] < tick_epoch" + "".join(
                 f" or last[{j}] > stamps[{i}]" for j in self.pure_exec_dependencies[i])
@@ -192,6 +186,19 @@ class CompiledGraph:
 
     def instantiate(self, world: World | None = None, **options) -> "GraphInstance":
         return GraphInstance(self, world, **options)
+
+
+def _exec_ancestors(data_graph: nx.DiGraph, pure: list[bool]) -> dict[int, frozenset[int]]:
+    """Per node, the exec nodes among its data ancestors (one pass in topological order, not a search per node)."""
+    found: dict[int, frozenset[int]] = {}
+    for index in nx.topological_sort(data_graph):
+        ancestors: set[int] = set()
+        for upstream in data_graph.predecessors(index):
+            ancestors.update(found[upstream])
+            if not pure[upstream]:
+                ancestors.add(upstream)
+        found[index] = frozenset(ancestors)
+    return found
 
 
 def _pure_schedule(data_graph: nx.DiGraph, index: int, pure: list[bool]) -> tuple[int, ...]:

@@ -6,33 +6,16 @@ imported only when a stage is named) or is a plain ``ClockWorld``.
 from __future__ import annotations
 
 import math
-import weakref
 from dataclasses import dataclass
 from typing import Callable
 
+from .compiler import compile as compile_graph   # one compiled graph per document and registry, shared
 from .document import GraphDocument, load_document
-from .executor import CompiledGraph, GraphInstance, LogEvent
-from .registry import Registry, default_registry
+from .executor import GraphInstance, LogEvent
+from .registry import Registry
 from .world import ClockWorld, World
 
 DEFAULT_TIME_STEP = 1.0 / 60.0
-_compiled_graphs: "weakref.WeakValueDictionary[tuple[int, int], CompiledGraph]" = weakref.WeakValueDictionary()
-
-
-def compile_graph(document: GraphDocument, registry: Registry | None = None) -> CompiledGraph:
-    """The compiled graph of *document*, shared by every Simulation of that document (and registry).
-
-    A compiled graph is immutable, so N worlds running one graph share its tables
-    and generated code instead of holding N copies (see benchmarks/instances.py).
-    Kept while some simulation uses it; it keeps its document alive, so the id key
-    cannot be reused meanwhile.
-    """
-    registry = registry or default_registry()
-    key = (id(document), id(registry))
-    compiled = _compiled_graphs.get(key)
-    if compiled is None or compiled.document is not document or compiled.registry is not registry:
-        compiled = _compiled_graphs[key] = CompiledGraph(document, registry)
-    return compiled
 
 
 @dataclass(frozen=True)
@@ -61,8 +44,8 @@ class Simulation:
                  instances: int = 1, registry: Registry | None = None,
                  on_log: Callable[[LogEvent], None] | None = None, observer=None):
         self.document = document
+        self.compiled = compile_graph(document, registry)   # a bad document fails before a world is built
         self.world = world if world is not None else create_world_for(document, gui=gui)
-        self.compiled = compile_graph(document, registry)
         self.instances: list[GraphInstance] = [
             self.compiled.instantiate(self.world, on_log=on_log, observer=observer) for _ in range(instances)]
 
