@@ -21,7 +21,7 @@ import linecache
 import logging
 from collections import Counter, deque
 from dataclasses import dataclass
-from typing import Any, Callable
+from typing import Any, Callable, Iterable
 
 import networkx as nx
 
@@ -300,16 +300,29 @@ class NodeDatabase:
 class GraphInstance:
     """The mutable run-time state of one compiled graph: values, state, latent set, variables."""
 
-    def __init__(self, compiled: CompiledGraph, world: World | None = None, *,
-                 on_log: Callable[[LogEvent], None] | None = None,
-                 observer: Any = None):
+    def __init__(self, compiled: CompiledGraph, world: World | None = None, *, listeners: Iterable[Any] = ()):
         self.compiled = compiled
         self.world = world if world is not None else ClockWorld(compiled.document.settings.get("timeStep", 1 / 60))
-        self.on_log = on_log
-        self.observer = observer   # optional: .on_compute(tick, node_name, fired: list[str]) for traces
+        self._compute_listeners: tuple[Callable, ...] = ()
+        self._log_listeners: tuple[Callable[[LogEvent], None], ...] = ()
+        for listener in listeners:   # before reset(): a node's initialize() may log
+            self.add_listener(listener)
         self._databases = [NodeDatabase(self, node) for node in compiled.nodes]
         self._bind()
         self.reset()
+
+    def add_listener(self, listener: Any) -> None:
+        """Call the listener's ``on_compute`` and ``on_log``, if it has them (see ``graphflow.runtime.Listener``).
+
+        ``on_compute(instance, node_name, fired, db)`` after every compute of this instance (*fired*: the
+        exec outputs it left enabled); ``on_log(event)`` for every ``db.log`` line. A tick only pays for
+        ``on_compute`` while some listener has one.
+        """
+        on_compute, on_log = getattr(listener, "on_compute", None), getattr(listener, "on_log", None)
+        if on_compute is not None:
+            self._compute_listeners += (on_compute,)
+        if on_log is not None:
+            self._log_listeners += (on_log,)
 
     def _bind(self) -> None:
         """Bind the compiled tables to this instance's value dicts (which reset() refills in place)."""
@@ -421,7 +434,7 @@ class GraphInstance:
         exec_input_names, exec_output_names = compiled.exec_input_names, compiled.exec_output_names
         push_plans, self_entries = compiled.push_plans, compiled.plain_entries
         last_exec_compute, compute_counts, latent = self._last_exec_compute, self.compute_counts, self._latent
-        observer = self.observer
+        compute_listeners = self._compute_listeners
         budget = compiled.step_budget
         count = self._computes_this_tick
         try:
@@ -450,8 +463,8 @@ class GraphInstance:
                     raise
                 except Exception as error:
                     raise self._failure(index, error) from error
-                if observer is not None:
-                    self._observe(index)
+                if compute_listeners:
+                    self._tell_compute(index)
                 # push: exec outputs last to first, so the first output's first target pops first
                 reentry_pushed = False
                 for name, targets in push_plans[index]:
@@ -481,10 +494,12 @@ class GraphInstance:
             self._pull_programs[index] = self._bind_pull(index)   # a pure node computed on its own
         self._run_from((index, tuple(pins)), push=_discard)
 
-    def _observe(self, index: int) -> None:
+    def _tell_compute(self, index: int) -> None:
         outputs = self._output_dicts[index]
         fired = [name for name in self.compiled.exec_output_names[index] if outputs[name] != _DISABLED]
-        self.observer.on_compute(self.tick_count, self.compiled.nodes[index].name, fired, self._databases[index])
+        name, database = self.compiled.nodes[index].name, self._databases[index]
+        for on_compute in self._compute_listeners:
+            on_compute(self, name, fired, database)
 
     def _failure(self, index: int, error: Exception) -> GraphRuntimeError:
         node = self.compiled.nodes[index]
@@ -501,5 +516,5 @@ class GraphInstance:
         event = LogEvent(self.tick_count, self.world.time, node_name, level.lower(), message)
         self.events.append(event)
         log.log(getattr(logging, level.upper(), logging.INFO), "%s: %s", node_name, message)
-        if self.on_log is not None:
-            self.on_log(event)
+        for on_log in self._log_listeners:
+            on_log(event)

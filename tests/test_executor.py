@@ -121,8 +121,8 @@ def test_pure_node_recomputes_when_an_exec_source_changes_within_a_tick():
          _conn("loop.outputs:loopBody", "body.inputs:execIn"), _conn("loop.outputs:element", "double.inputs:a"),
          _conn("double.outputs:product", "body.inputs:value")], registry)
     seen = []
-    instance = compile(document, registry).instantiate(observer=types.SimpleNamespace(
-        on_compute=lambda tick, name, fired, db: seen.append(db.inputs.value) if name == "body" else None))
+    instance = compile(document, registry).instantiate(listeners=[types.SimpleNamespace(
+        on_compute=lambda instance, name, fired, db: seen.append(db.inputs.value) if name == "body" else None)])
     instance.tick()
     assert seen == [2.0, 4.0, 6.0]
     assert record == ["body"] * 3
