@@ -1,8 +1,10 @@
-"""Graph documents: the JSON file format, its validation, and atomic saving.
+"""Graph documents: the JSON file format, its schema, and atomic saving.
 
 A ``GraphDocument`` is immutable and holds authored values exactly as written,
-so load -> save -> load is byte-identical. Validation reports every problem of
-a file at once, each as one line naming the file, node and attribute.
+so load -> save -> load is byte-identical. Loading reports every problem of a
+file at once, each as one line naming the file, node and attribute: the schema
+here, then everything about node types, values and connections by compiling
+the document (``graphflow.compiler``).
 """
 from __future__ import annotations
 
