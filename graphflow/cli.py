@@ -31,19 +31,24 @@ class BadInput(Exception):
     """Reported as one line with exit code 2."""
 
 
-def _print_log_event(event: LogEvent) -> None:
-    if event.level in ("warning", "warn", "error"):
-        print(f"{event.level.upper()}: {event.node}: {event.message}", file=sys.stderr)
-    else:
-        print(event.message, flush=True)
+class _PrintedLog:
+    """Run listener: the graph's log lines, info on stdout, warnings and errors on stderr."""
+
+    @staticmethod
+    def on_log(event: LogEvent) -> None:
+        if event.level in ("warning", "warn", "error"):
+            print(f"{event.level.upper()}: {event.node}: {event.message}", file=sys.stderr)
+        else:
+            print(event.message, flush=True)
 
 
 class _Progress:
-    """A status line on a terminal for runs longer than a few seconds; silent otherwise."""
+    """Run listener: a status line on a terminal for runs longer than a few seconds; silent otherwise."""
 
-    def __init__(self, simulation, enabled: bool):
+    def __init__(self, simulation, enabled: bool, limit: int | None = None):
         self.simulation = simulation
         self.enabled = enabled
+        self.limit = limit
         self.started = time.perf_counter()
         self.last_shown = 0.0
         self.shown = False
@@ -51,7 +56,7 @@ class _Progress:
         self.phase_node = next((node.name for node in simulation.compiled.nodes
                                 if node.spec.attribute("outputs:eventName") is not None), None)
 
-    def __call__(self, count: int, limit: int | None) -> None:
+    def on_tick(self, _simulation, count: int) -> None:
         if not self.enabled or count % 32:
             return
         now = time.perf_counter()
@@ -59,7 +64,7 @@ class _Progress:
         if elapsed < PROGRESS_AFTER_SECONDS or now - self.last_shown < 0.25:
             return
         self.last_shown = now
-        sys.stderr.write("\r" + self.status(count, limit, elapsed))
+        sys.stderr.write("\r" + self.status(count, self.limit, elapsed))
         sys.stderr.flush()
         self.shown = True
 
@@ -71,27 +76,40 @@ class _Progress:
             line += f"  phase {self.simulation.instance.output(self.phase_node, 'eventName') or '-':<20}"
         return line
 
-    def finish(self) -> None:
+    def on_end(self, _simulation, _result) -> None:
+        """End the status line (also when the run failed or was interrupted)."""
         if self.shown:
             sys.stderr.write("\n")
 
 
 class _RealTimePacer:
-    """Holds a --gui run to the pace of simulated time (times --speed), so people can watch it.
+    """Run listener holding a --gui run to the pace of simulated time (times --speed), so people can watch it.
 
     Only the display is paced: the simulation never reads the wall clock, so a paced run
     computes exactly what a headless run does.
     """
 
-    def __init__(self, world, speed: float):
-        self.world = world
+    def __init__(self, speed: float):
         self.speed = speed
         self.started = time.perf_counter()
 
-    def __call__(self) -> None:
-        ahead = self.world.time / self.speed - (time.perf_counter() - self.started)
+    def on_tick(self, simulation, _tick: int) -> None:
+        ahead = simulation.world.time / self.speed - (time.perf_counter() - self.started)
         if ahead > 0:
             time.sleep(ahead)
+
+
+class _VideoFrames:
+    """Run listener feeding a video recorder: a frame when one is due after each tick, the file finished at the end."""
+
+    def __init__(self, video):
+        self.video = video
+
+    def on_tick(self, _simulation, _tick: int) -> None:
+        self.video.capture()
+
+    def on_end(self, _simulation, _result) -> None:
+        self.video.close()
 
 
 def _load(path: str):
@@ -160,7 +178,7 @@ def command_run(args) -> int:
 
         route_native_stdout_to_stderr()
     try:
-        simulation = Simulation(document, gui=args.gui, on_log=_print_log_event)
+        simulation = Simulation(document, gui=args.gui, listeners=[_PrintedLog()])
     except (ValueError, OSError) as error:
         raise BadInput(f"{args.graph}: {error}") from None
     if keys is not None:
@@ -170,41 +188,30 @@ def command_run(args) -> int:
     seconds = args.seconds
     if args.ticks is None and seconds is None:
         seconds = document.settings.get("duration")
-    progress = _Progress(simulation, sys.stdout.isatty())
-    after_tick, closers = [], []   # per-tick hooks (trace, video) and what to close when the run ends
+    trace_stream = None   # the trace file is ours to close; every other per-tick job is a listener
     try:
         if args.trace:
-            tracer = _open_trace(args.trace, simulation, args.graph)
-            after_tick.append(tracer.record_tick)
-            closers.append(tracer.stream.close)
+            trace_stream = _open_trace(args.trace, simulation, args.graph)
         if args.record:
-            video = _start_recording(args, simulation.world)
-            after_tick.append(video.capture)
-            closers.append(video.close)
+            simulation.add_listener(_VideoFrames(_start_recording(args, simulation.world)))
     except BadInput:
         simulation.close()
         raise
-
     if args.gui and args.speed > 0:
-        after_tick.append(_RealTimePacer(simulation.world, args.speed))
-
-    def on_tick(count: int, limit: int | None) -> None:
-        for hook in after_tick:
-            hook()
-        progress(count, limit)
+        simulation.add_listener(_RealTimePacer(args.speed))
+    simulation.add_listener(_Progress(simulation, sys.stdout.isatty(),
+                                      simulation.tick_limit(ticks=args.ticks, seconds=seconds)))
 
     started = time.perf_counter()
     try:
-        result = simulation.run(ticks=args.ticks, seconds=seconds, progress=on_tick)
+        result = simulation.run(ticks=args.ticks, seconds=seconds)
     except KeyboardInterrupt:
-        progress.finish()
         print("graphflow: interrupted", file=sys.stderr)
         return EXIT_RUNTIME
     finally:
-        for close in closers:
-            close()
+        if trace_stream is not None:
+            trace_stream.close()
         simulation.close()
-    progress.finish()
     wall = time.perf_counter() - started
     reason = "graph finished" if result.stopped_by_graph else "limit reached"
     logging.getLogger("graphflow").info("%s: %d ticks, %.3f s simulated in %.2f s wall (%s)",
@@ -254,13 +261,15 @@ def _point(text: str) -> tuple[float, float, float]:
 
 
 def _open_trace(path: str, simulation, graph: str):
+    """Open the trace file and attach a recorder writing to it; return the file (the caller closes it)."""
     from .trace import TraceRecorder
 
     try:
         stream = open(path, "w", encoding="utf-8", newline="\n")
     except OSError as error:
         raise BadInput(f"{path}: cannot write the trace: {error.strerror}") from None
-    return TraceRecorder(simulation, stream, graph=graph)
+    TraceRecorder(simulation, stream, graph=graph)
+    return stream
 
 
 def command_trace_diff(args) -> int:

@@ -1,8 +1,10 @@
-"""Graph documents: the JSON file format, its validation, and atomic saving.
+"""Graph documents: the JSON file format, its schema, and atomic saving.
 
 A ``GraphDocument`` is immutable and holds authored values exactly as written,
-so load -> save -> load is byte-identical. Validation reports every problem of
-a file at once, each as one line naming the file, node and attribute.
+so load -> save -> load is byte-identical. Loading reports every problem of a
+file at once, each as one line naming the file, node and attribute: the schema
+here, then everything about node types, values and connections by compiling
+the document (``graphflow.compiler``).
 """
 from __future__ import annotations
 
@@ -16,11 +18,7 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
 
-import networkx as nx
-
-from .registry import Registry, default_registry
-from .spec import NodeType
-from .types import TypeMismatch, can_connect, parse_type
+from .registry import Registry
 
 FORMAT_NAME = "graphflow"
 FORMAT_VERSION = (1, 0)
@@ -104,6 +102,8 @@ class GraphDocument:
     ui: Mapping[str, Any] = field(default_factory=dict)
     format_version: tuple[int, int] = FORMAT_VERSION
     source: str = "<graph>"   # the file it came from, for messages and relative stage paths
+    # its compiled graph per registry id, kept by graphflow.compiler.compile (derived, not part of the definition)
+    _compiled: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     def node(self, name: str) -> NodeDoc | None:
         return next((n for n in self.nodes if n.name == name), None)
@@ -177,7 +177,7 @@ def _schema_problems(data: Any, source: str) -> list[Problem]:
 
 
 def parse_document(data: Any, source: str = "<graph>", registry: Registry | None = None) -> GraphDocument:
-    """Build and validate a document from parsed JSON; raise GraphError listing every problem."""
+    """Build and check a document from parsed JSON (schema, then ``graphflow.compiler.compile``); raise GraphError listing every problem."""
     problems = _schema_problems(data, source)
     if problems:
         raise GraphError(problems)
@@ -196,9 +196,9 @@ def parse_document(data: Any, source: str = "<graph>", registry: Registry | None
         format_version=tuple(data["formatVersion"]),
         source=source,
     )
-    problems = validate(document, registry)
-    if problems:
-        raise GraphError(problems)
+    from .compiler import compile   # checking a document is compiling it (the compiler imports this module)
+
+    compile(document, registry)
     return document
 
 
@@ -244,123 +244,3 @@ def save_document(document: GraphDocument, path: str | os.PathLike) -> None:
         if os.path.exists(temporary):
             os.unlink(temporary)
         raise
-
-
-# ---------------------------------------------------------------- validation
-
-def validate(document: GraphDocument, registry: Registry | None = None) -> list[Problem]:
-    """Every semantic problem of a document (the schema was already checked)."""
-    registry = registry or default_registry()
-    source = document.source
-    problems: list[Problem] = []
-    types: dict[str, NodeType] = {}
-
-    seen: set[str] = set()
-    for node in document.nodes:
-        if node.name in seen:
-            problems.append(Problem(source, "duplicate node name", node=node.name))
-        seen.add(node.name)
-        node_type = registry.get(node.type)
-        if node_type is None:
-            hint = registry.suggest(node.type)
-            problems.append(Problem(source, f"unknown node type {node.type!r}" + (f" (did you mean {hint!r}?)" if hint else ""), node=node.name))
-            continue
-        types[node.name] = node_type
-        problems.extend(_node_problems(source, node, node_type))
-
-    problems.extend(_variable_problems(source, document.variables))
-    problems.extend(_connection_problems(source, document, types))
-    return problems
-
-
-def _node_problems(source: str, node: NodeDoc, node_type: NodeType) -> list[Problem]:
-    spec = node_type.spec
-    problems = []
-    if node.type_version is not None and not spec.accepts_version(node.type_version):
-        problems.append(Problem(source, f"typeVersion {node.type_version} of {spec.id} is not supported (this runtime has version {spec.version})", node=node.name))
-    for name, value in node.inputs.items():
-        qualified = f"inputs:{name}"
-        attribute = spec.attribute(qualified)
-        if attribute is None:
-            problems.append(Problem(source, f"{spec.id} has no such input", node=node.name, attribute=qualified))
-            continue
-        if attribute.is_execution:
-            problems.append(Problem(source, "execution inputs take connections, not values", node=node.name, attribute=qualified))
-            continue
-        try:
-            attribute.check(value)
-        except TypeMismatch as error:
-            problems.append(Problem(source, str(error), node=node.name, attribute=qualified))
-    if node_type.validate is not None and not problems:
-        for message in node_type.validate(node.name, dict(node.inputs)):
-            problems.append(Problem(source, message, node=node.name))
-    return problems
-
-
-def _variable_problems(source: str, variables) -> list[Problem]:
-    problems, seen = [], set()
-    for variable in variables:
-        if variable.name in seen:
-            problems.append(Problem(source, "duplicate variable name", attribute=variable.name, kind="variable"))
-        seen.add(variable.name)
-        try:
-            attr_type = parse_type(variable.type)
-        except ValueError as error:
-            problems.append(Problem(source, str(error), attribute=variable.name, kind="variable"))
-            continue
-        if variable.default is not None:
-            try:
-                attr_type.coerce(variable.default)
-            except TypeMismatch as error:
-                problems.append(Problem(source, f"default: {error}", attribute=variable.name, kind="variable"))
-    return problems
-
-
-def _connection_problems(source: str, document: GraphDocument, types: dict[str, NodeType]) -> list[Problem]:
-    problems = []
-    names = {n.name for n in document.nodes}
-    data_sources: dict[tuple[str, str], list[str]] = {}
-    data_graph = nx.DiGraph()
-    for connection in document.connections:
-        label = f"{connection.src} -> {connection.dst}"
-        endpoints = []
-        for node_name, attr_name in ((connection.src_node, connection.src_attr), (connection.dst_node, connection.dst_attr)):
-            if node_name not in names:
-                problems.append(Problem(source, f"dangling connection {label}: no node named '{node_name}'", node=node_name, attribute=attr_name, kind="connection"))
-                endpoints.append(None)
-                continue
-            node_type = types.get(node_name)
-            if node_type is None:
-                endpoints.append(None)  # the unknown type was already reported
-                continue
-            attribute = node_type.spec.attribute(attr_name)
-            if attribute is None:
-                problems.append(Problem(source, f"dangling connection {label}: {node_type.spec.id} has no attribute '{attr_name}'", node=node_name, attribute=attr_name, kind="connection"))
-            endpoints.append(attribute)
-        src_attribute, dst_attribute = endpoints
-        if src_attribute is None or dst_attribute is None:
-            continue
-        if not can_connect(src_attribute.attr_type, dst_attribute.attr_type):
-            problems.append(Problem(source, f"type mismatch in {label}: {src_attribute.type} cannot feed {dst_attribute.type}", node=connection.dst_node, attribute=connection.dst_attr, kind="connection"))
-            continue
-        if not dst_attribute.is_execution:
-            data_sources.setdefault((connection.dst_node, connection.dst_attr), []).append(connection.src)
-            data_graph.add_edge(connection.src_node, connection.dst_node)
-    for (node_name, attr_name), sources in data_sources.items():
-        if len(sources) > 1:
-            problems.append(Problem(source, f"more than one source into a data input: {', '.join(sources)}", node=node_name, attribute=attr_name, kind="connection"))
-    for cycle in _data_cycles(data_graph):
-        problems.append(Problem(source, f"data cycle: {' -> '.join(cycle + [cycle[0]])}", node=cycle[0]))
-    return problems
-
-
-def _data_cycles(graph: nx.DiGraph) -> list[list[str]]:
-    """One cycle per strongly connected component that loops (deterministic order)."""
-    cycles = []
-    for component in nx.strongly_connected_components(graph):
-        members = sorted(component)
-        if len(members) == 1 and not graph.has_edge(members[0], members[0]):
-            continue
-        cycle = nx.find_cycle(graph.subgraph(members), source=members[0])
-        cycles.append([edge[0] for edge in cycle])
-    return sorted(cycles)

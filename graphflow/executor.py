@@ -21,14 +21,14 @@ import linecache
 import logging
 from collections import Counter, deque
 from dataclasses import dataclass
-from typing import Any, Callable
+from typing import Any, Callable, Iterable
 
 import networkx as nx
 
 from .document import GraphDocument
-from .registry import Registry, default_registry
+from .registry import Registry
 from .spec import NodeSpec, NodeType
-from .types import ExecState, parse_type
+from .types import ExecState
 from .world import DEFAULT_TIME_STEP, ClockWorld, World
 
 DEFAULT_STEP_BUDGET = 100_000
@@ -40,6 +40,10 @@ _ENABLED = ExecState.ENABLED
 _ENABLED_AND_PUSH = ExecState.ENABLED_AND_PUSH
 _LATENT_PUSH = ExecState.LATENT_PUSH
 _LATENT_FINISH = ExecState.LATENT_FINISH
+
+
+def _discard(_entry) -> None:
+    """Where ``compute_node`` sends the entries a compute enables: nowhere."""
 
 
 class GraphRuntimeError(RuntimeError):
@@ -70,7 +74,7 @@ class CompiledNode:
     node_type: NodeType
     authored: tuple[tuple[str, Any], ...]          # coerced authored input values
     pulls: tuple[tuple[str, int, str], ...]        # (input name, source node index, source output name)
-    pure_schedule: tuple[int, ...]                 # pure upstream nodes in topological order
+    pure_schedule: tuple[int, ...]                 # pure upstream nodes in topological order (exec nodes; () for pure)
     exec_targets: tuple[tuple[str, tuple[tuple[int, str], ...]], ...]  # per exec output: (dst index, dst exec input)
 
     @property
@@ -79,37 +83,30 @@ class CompiledNode:
 
 
 class CompiledGraph:
-    """Immutable evaluation tables built from a document and a registry."""
+    """Immutable evaluation tables of a document whose checks passed.
 
-    def __init__(self, document: GraphDocument, registry: Registry | None = None):
-        registry = registry or default_registry()
+    Made only by ``graphflow.compiler.compile``, which checks the document and hands over what it
+    resolved: node types, coerced authored inputs, the valid connections as per-node pulls and exec
+    fan-out, the data graph over node indices, and the variables' types and initial values.
+    """
+
+    def __init__(self, document: GraphDocument, registry: Registry, *, node_types: tuple[NodeType, ...],
+                 authored: tuple[tuple[tuple[str, Any], ...], ...], pulls: list[list[tuple[str, int, str]]],
+                 exec_edges: list[dict[str, list[tuple[int, str]]]], data_graph: nx.DiGraph,
+                 variable_types: dict, variable_defaults: dict):
         self.document = document
         self.registry = registry
-        index_of = {node.name: i for i, node in enumerate(document.nodes)}
-        node_types = [registry.get(node.type) for node in document.nodes]
-        pulls: list[list[tuple[str, int, str]]] = [[] for _ in document.nodes]
-        exec_edges: list[dict[str, list[tuple[int, str]]]] = [{} for _ in document.nodes]
-        data_graph = nx.DiGraph()
-        data_graph.add_nodes_from(range(len(document.nodes)))
-        for connection in document.connections:
-            src, dst = index_of[connection.src_node], index_of[connection.dst_node]
-            src_name, dst_name = connection.src_attr.split(":", 1)[1], connection.dst_attr.split(":", 1)[1]
-            if node_types[dst].spec.attribute(connection.dst_attr).is_execution:
-                exec_edges[src].setdefault(src_name, []).append((dst, dst_name))
-            else:
-                pulls[dst].append((dst_name, src, src_name))
-                data_graph.add_edge(src, dst)
         pure = [t.spec.is_pure for t in node_types]
         self.is_pure = tuple(pure)
+        self._data_graph = data_graph   # for the schedules of pure nodes computed on their own (compute_node)
         self.nodes: tuple[CompiledNode, ...] = tuple(
             CompiledNode(
                 index=i,
                 name=node.name,
                 node_type=node_types[i],
-                authored=tuple((name, node_types[i].spec.attribute(f"inputs:{name}").check(value))
-                               for name, value in node.inputs.items()),
+                authored=authored[i],
                 pulls=tuple(pulls[i]),
-                pure_schedule=_pure_schedule(data_graph, i, pure),
+                pure_schedule=() if pure[i] else _pure_schedule(data_graph, i, pure),
                 exec_targets=tuple((a.name, tuple(exec_edges[i].get(a.name, ()))) for a in node_types[i].spec.exec_outputs),
             )
             for i, node in enumerate(document.nodes)
@@ -126,13 +123,12 @@ class CompiledGraph:
                   for name, targets in reversed(n.exec_targets))
             for n in self.nodes)
         # exec nodes each pure node depends on (through other pure nodes): their computes invalidate it
+        exec_ancestors = _exec_ancestors(data_graph, pure)
         self.pure_exec_dependencies = tuple(
-            tuple(sorted(j for j in nx.ancestors(data_graph, i) if not pure[j])) if pure[i] else ()
-            for i in range(len(self.nodes)))
-        self.index_of = index_of
-        self.variable_types = {v.name: parse_type(v.type) for v in document.variables}
-        self.variable_defaults = {v.name: (parse_type(v.type).coerce(v.default) if v.default is not None
-                                           else parse_type(v.type).default_value()) for v in document.variables}
+            tuple(sorted(exec_ancestors[i])) if pure[i] else () for i in range(len(self.nodes)))
+        self.index_of = {node.name: i for i, node in enumerate(document.nodes)}
+        self.variable_types = variable_types
+        self.variable_defaults = variable_defaults
         self.step_budget = int(document.settings.get("stepBudget", DEFAULT_STEP_BUDGET))
         # the names pull programs use for node i's input dict, output dict, compute and database
         self.program_names = tuple((f"in{i}", f"out{i}", f"compute{i}", f"db{i}") for i in range(len(self.nodes)))
@@ -161,10 +157,12 @@ class CompiledGraph:
         ``counts`` lists, ``failure`` and ``GraphRuntimeError``. Only indices and repr() of names
         reach the source, so no text from a graph file can become code.
         """
-        if not node.pure_schedule:
+        schedule = _pure_schedule(self._data_graph, node.index, self.is_pure) if self.is_pure[node.index] \
+            else node.pure_schedule
+        if not schedule:
             return ""
         lines = [f"def pull(tick_epoch, epoch):  # pure nodes pulled by {node.name!r}", "    node = -1", "    try:"]
-        for i in node.pure_schedule:
+        for i in schedule:
             pure_node = self.nodes[i]
             stale = f"stamps[{i}] < tick_epoch" + "".join(
                 f" or last[{j}] > stamps[{i}]" for j in self.pure_exec_dependencies[i])
@@ -188,6 +186,19 @@ class CompiledGraph:
 
     def instantiate(self, world: World | None = None, **options) -> "GraphInstance":
         return GraphInstance(self, world, **options)
+
+
+def _exec_ancestors(data_graph: nx.DiGraph, pure: list[bool]) -> dict[int, frozenset[int]]:
+    """Per node, the exec nodes among its data ancestors (one pass in topological order, not a search per node)."""
+    found: dict[int, frozenset[int]] = {}
+    for index in nx.topological_sort(data_graph):
+        ancestors: set[int] = set()
+        for upstream in data_graph.predecessors(index):
+            ancestors.update(found[upstream])
+            if not pure[upstream]:
+                ancestors.add(upstream)
+        found[index] = frozenset(ancestors)
+    return found
 
 
 def _pure_schedule(data_graph: nx.DiGraph, index: int, pure: list[bool]) -> tuple[int, ...]:
@@ -289,16 +300,29 @@ class NodeDatabase:
 class GraphInstance:
     """The mutable run-time state of one compiled graph: values, state, latent set, variables."""
 
-    def __init__(self, compiled: CompiledGraph, world: World | None = None, *,
-                 on_log: Callable[[LogEvent], None] | None = None,
-                 observer: Any = None):
+    def __init__(self, compiled: CompiledGraph, world: World | None = None, *, listeners: Iterable[Any] = ()):
         self.compiled = compiled
         self.world = world if world is not None else ClockWorld(compiled.document.settings.get("timeStep", DEFAULT_TIME_STEP))
-        self.on_log = on_log
-        self.observer = observer   # optional: .on_compute(tick, node_name, fired: list[str]) for traces
+        self._compute_listeners: tuple[Callable, ...] = ()
+        self._log_listeners: tuple[Callable[[LogEvent], None], ...] = ()
+        for listener in listeners:   # before reset(): a node's initialize() may log
+            self.add_listener(listener)
         self._databases = [NodeDatabase(self, node) for node in compiled.nodes]
         self._bind()
         self.reset()
+
+    def add_listener(self, listener: Any) -> None:
+        """Call the listener's ``on_compute`` and ``on_log``, if it has them (see ``graphflow.runtime.Listener``).
+
+        ``on_compute(instance, node_name, fired, db)`` after every compute of this instance (*fired*: the
+        exec outputs it left enabled); ``on_log(event)`` for every ``db.log`` line. A tick only pays for
+        ``on_compute`` while some listener has one.
+        """
+        on_compute, on_log = getattr(listener, "on_compute", None), getattr(listener, "on_log", None)
+        if on_compute is not None:
+            self._compute_listeners += (on_compute,)
+        if on_log is not None:
+            self._log_listeners += (on_log,)
 
     def _bind(self) -> None:
         """Bind the compiled tables to this instance's value dicts (which reset() refills in place)."""
@@ -392,21 +416,25 @@ class GraphInstance:
         self._tick_epoch = self._exec_epoch
         self._epoch_tick = self.tick_count
 
-    def _run_from(self, entry: tuple[int, tuple[str, ...]]) -> None:
+    def _run_from(self, entry: tuple[int, tuple[str, ...]], push=None) -> None:
         """Drain the exec stack from one entry: compute a node, then push what its exec outputs enabled.
 
-        The compute is ``_compute`` written out in the loop (this is the hot path): keep the two in step.
+        The one compute path (this is the hot path: locals only). *push*, when given, receives the
+        entries the node's exec outputs enable instead of the stack: ``compute_node`` discards them,
+        so exactly one node computes, with the same pulls, pins, latent bookkeeping and counts as a tick.
         """
         compiled = self.compiled
         stack = [entry]
-        pop, push = stack.pop, stack.append
+        pop = stack.pop
+        if push is None:
+            push = stack.append
         computes, databases = self._computes, self._databases
         input_dicts, output_dicts, pulls = self._input_dicts, self._output_dicts, self._pulls
         pull_programs = self._pull_programs
         exec_input_names, exec_output_names = compiled.exec_input_names, compiled.exec_output_names
         push_plans, self_entries = compiled.push_plans, compiled.plain_entries
         last_exec_compute, compute_counts, latent = self._last_exec_compute, self.compute_counts, self._latent
-        observer = self.observer
+        compute_listeners = self._compute_listeners
         budget = compiled.step_budget
         count = self._computes_this_tick
         try:
@@ -435,8 +463,8 @@ class GraphInstance:
                     raise
                 except Exception as error:
                     raise self._failure(index, error) from error
-                if observer is not None:
-                    self._observe(index)
+                if compute_listeners:
+                    self._tell_compute(index)
                 # push: exec outputs last to first, so the first output's first target pops first
                 reentry_pushed = False
                 for name, targets in push_plans[index]:
@@ -461,46 +489,17 @@ class GraphInstance:
         index = self.compiled.index_of[node_name]
         if self._epoch_tick != self.tick_count:   # the harness advanced tick_count itself
             self._start_tick_epoch()
-        self._compute(index, tuple(pins))
-        outputs = self._output_dicts[index]
-        for name in self.compiled.exec_output_names[index]:
-            if outputs[name] == _LATENT_PUSH:
-                self._latent[index] = None
-            elif outputs[name] == _LATENT_FINISH:
-                self._latent.pop(index, None)
+            self._computes_this_tick = 0
+        if self._pull_programs[index] is None and self.compiled.is_pure[index]:
+            self._pull_programs[index] = self._bind_pull(index)   # a pure node computed on its own
+        self._run_from((index, tuple(pins)), push=_discard)
 
-    def _compute(self, index: int, pins: tuple[str, ...]) -> None:
-        """Compute an exec node: pull (computing stale pure upstream nodes), set exec pins, call compute."""
-        pull = self._pull_programs[index]
-        if pull is None and self.compiled.is_pure[index]:   # a pure node computed on its own (test harness)
-            pull = self._pull_programs[index] = self._bind_pull(index)
-        if pull is not None:
-            pull(self._tick_epoch, self._exec_epoch)
-        for inputs, name, source, source_name in self._pulls[index]:
-            inputs[name] = source[source_name]
-        inputs, outputs = self._input_dicts[index], self._output_dicts[index]
-        compiled = self.compiled
-        for name in compiled.exec_input_names[index]:
-            inputs[name] = _ENABLED if name in pins else _DISABLED
-        for name in compiled.exec_output_names[index]:
-            outputs[name] = _DISABLED
-        self._exec_epoch += 1
-        self._last_exec_compute[index] = self._exec_epoch
-        self.compute_counts[index] += 1
-        database = self._databases[index]
-        try:
-            self._computes[index](database)
-        except GraphRuntimeError:
-            raise
-        except Exception as error:
-            raise self._failure(index, error) from error
-        if self.observer is not None:
-            self._observe(index)
-
-    def _observe(self, index: int) -> None:
+    def _tell_compute(self, index: int) -> None:
         outputs = self._output_dicts[index]
         fired = [name for name in self.compiled.exec_output_names[index] if outputs[name] != _DISABLED]
-        self.observer.on_compute(self.tick_count, self.compiled.nodes[index].name, fired, self._databases[index])
+        name, database = self.compiled.nodes[index].name, self._databases[index]
+        for on_compute in self._compute_listeners:
+            on_compute(self, name, fired, database)
 
     def _failure(self, index: int, error: Exception) -> GraphRuntimeError:
         node = self.compiled.nodes[index]
@@ -517,5 +516,5 @@ class GraphInstance:
         event = LogEvent(self.tick_count, self.world.time, node_name, level.lower(), message)
         self.events.append(event)
         log.log(getattr(logging, level.upper(), logging.INFO), "%s: %s", node_name, message)
-        if self.on_log is not None:
-            self.on_log(event)
+        for on_log in self._log_listeners:
+            on_log(event)

@@ -6,32 +6,14 @@ imported only when a stage is named) or is a plain ``ClockWorld``.
 from __future__ import annotations
 
 import math
-import weakref
 from dataclasses import dataclass
-from typing import Callable
+from typing import Any, Callable, Iterable, Protocol
 
+from .compiler import compile as compile_graph   # one compiled graph per document and registry, shared
 from .document import GraphDocument, load_document
-from .executor import CompiledGraph, GraphInstance, LogEvent
-from .registry import Registry, default_registry
+from .executor import GraphInstance
+from .registry import Registry
 from .world import DEFAULT_TIME_STEP, ClockWorld, World
-
-_compiled_graphs: "weakref.WeakValueDictionary[tuple[int, int], CompiledGraph]" = weakref.WeakValueDictionary()
-
-
-def compile_graph(document: GraphDocument, registry: Registry | None = None) -> CompiledGraph:
-    """The compiled graph of *document*, shared by every Simulation of that document (and registry).
-
-    A compiled graph is immutable, so N worlds running one graph share its tables
-    and generated code instead of holding N copies (see benchmarks/instances.py).
-    Kept while some simulation uses it; it keeps its document alive, so the id key
-    cannot be reused meanwhile.
-    """
-    registry = registry or default_registry()
-    key = (id(document), id(registry))
-    compiled = _compiled_graphs.get(key)
-    if compiled is None or compiled.document is not document or compiled.registry is not registry:
-        compiled = _compiled_graphs[key] = CompiledGraph(document, registry)
-    return compiled
 
 
 @dataclass(frozen=True)
@@ -53,17 +35,38 @@ def create_world_for(document: GraphDocument, *, gui: bool = False) -> World:
                                 time_step=settings.get("timeStep"), substeps=settings.get("substeps", 1), gui=gui)
 
 
+class Listener(Protocol):
+    """Follows a simulation tick by tick: traces, progress lines, real-time pacing, video, log printing.
+
+    Every method is optional; the simulation calls those a listener has, in the order listeners
+    were added:
+
+    * ``on_tick(simulation, tick)``: after every ``step()``, once the world and every instance ticked
+      (*tick* counts the steps since the simulation was made or reset);
+    * ``on_compute(instance, node_name, fired, db)``: after every node compute of every instance
+      (*fired*: the exec outputs it left enabled). It is on the executor's hot path: only traces use it;
+    * ``on_log(event)``: every ``db.log`` line of every instance, as it is logged;
+    * ``on_end(simulation, result)``: once when ``run()`` ends; *result* is the ``RunResult``, or None
+      when the run ended by an exception (a failing node, an interrupt), which then propagates.
+    """
+
+    def on_tick(self, simulation: "Simulation", tick: int) -> None: ...
+
+
 class Simulation:
-    """A world plus one or more instances of one compiled graph, ticked in lockstep."""
+    """A world plus one or more instances of one compiled graph, ticked in lockstep, and its listeners."""
 
     def __init__(self, document: GraphDocument, *, world: World | None = None, gui: bool = False,
-                 instances: int = 1, registry: Registry | None = None,
-                 on_log: Callable[[LogEvent], None] | None = None, observer=None):
+                 instances: int = 1, registry: Registry | None = None, listeners: Iterable[Any] = ()):
         self.document = document
+        self.compiled = compile_graph(document, registry)   # a bad document fails before a world is built
         self.world = world if world is not None else create_world_for(document, gui=gui)
-        self.compiled = compile_graph(document, registry)
+        self.tick_count = 0
+        self.listeners: list[Any] = list(listeners)
+        self._tick_listeners: tuple[Callable[[Simulation, int], None], ...] = tuple(
+            listener.on_tick for listener in self.listeners if getattr(listener, "on_tick", None) is not None)
         self.instances: list[GraphInstance] = [
-            self.compiled.instantiate(self.world, on_log=on_log, observer=observer) for _ in range(instances)]
+            self.compiled.instantiate(self.world, listeners=self.listeners) for _ in range(instances)]
 
     @classmethod
     def load(cls, path, **options) -> "Simulation":
@@ -73,26 +76,51 @@ class Simulation:
     def instance(self) -> GraphInstance:
         return self.instances[0]
 
+    def add_listener(self, listener: Any) -> None:
+        """Attach a ``Listener``: it hears every tick, compute, log line and run end from now on."""
+        self.listeners.append(listener)
+        on_tick = getattr(listener, "on_tick", None)
+        if on_tick is not None:
+            self._tick_listeners += (on_tick,)
+        for instance in self.instances:
+            instance.add_listener(listener)
+
     def step(self) -> None:
-        """Physics step (with post-step services), then every graph instance ticks once."""
+        """Physics step (with post-step services), then every graph instance ticks once, then ``on_tick``."""
         self.world.step()
         for instance in self.instances:
             instance.tick()
+        self.tick_count = tick = self.tick_count + 1
+        for on_tick in self._tick_listeners:
+            on_tick(self, tick)
 
-    def run(self, *, ticks: int | None = None, seconds: float | None = None,
-            progress: Callable[[int, int | None], None] | None = None) -> RunResult:
-        """Step until the tick limit, the time limit, or a graph asks to stop."""
+    def tick_limit(self, *, ticks: int | None = None, seconds: float | None = None) -> int | None:
+        """How many steps ``run(ticks=, seconds=)`` takes at most (None: until the graph stops)."""
         limit = ticks
         if seconds is not None:
             by_time = math.ceil(seconds / self.world.time_step - 1e-9)
             limit = by_time if limit is None else min(limit, by_time)
+        return limit
+
+    def run(self, *, ticks: int | None = None, seconds: float | None = None) -> RunResult:
+        """Step until the tick limit, the time limit, or a graph asks to stop; then ``on_end``."""
+        limit = self.tick_limit(ticks=ticks, seconds=seconds)
+        result = None
+        try:
+            result = self._run(limit)
+        finally:
+            for listener in list(self.listeners):
+                on_end = getattr(listener, "on_end", None)
+                if on_end is not None:
+                    on_end(self, result)
+        return result
+
+    def _run(self, limit: int | None) -> RunResult:
         step, instances = self.step, self.instances
         count = 0
         while limit is None or count < limit:
             step()
             count += 1
-            if progress is not None:
-                progress(count, limit)
             for instance in instances:
                 if instance.stop_requested:
                     return RunResult(count, self.world.time, True)
@@ -102,6 +130,7 @@ class Simulation:
         self.world.reset()
         for instance in self.instances:
             instance.reset()
+        self.tick_count = 0
 
     def close(self) -> None:
         close = getattr(self.world, "close", None)

@@ -10,7 +10,8 @@ from dataclasses import dataclass
 from typing import Any, Mapping
 
 from .document import FORMAT_NAME, FORMAT_VERSION, GraphDocument, parse_document
-from .executor import CompiledGraph, GraphInstance
+from .compiler import compile
+from .executor import GraphInstance
 from .registry import Registry
 from .runtime import Simulation
 from .types import ExecState
@@ -43,7 +44,7 @@ class NodeHarness:
             node["typeVersion"] = type_version
         document = parse_document(_complete({"nodes": [node]}), source=f"<harness {type_id}>", registry=registry)
         self.world = world if world is not None else ClockWorld(time_step)
-        self.instance: GraphInstance = CompiledGraph(document, registry).instantiate(self.world)
+        self.instance: GraphInstance = compile(document, registry).instantiate(self.world)
         self.database = self.instance.database(HARNESS_NODE)
 
     @property

@@ -120,18 +120,17 @@ def _holding_force(manager, path: str) -> float | None:
 
 
 class TraceRecorder:
-    """Observes one graph instance and writes one line per tick to a text stream.
+    """Writes the trace of a simulation's first graph instance to a text stream: a header, then a line per tick.
 
-    Attach it with ``TraceRecorder(simulation, stream)``: it becomes the first
-    instance's observer, collects exec pulses as nodes compute, and
-    ``record_tick()`` (call it after every ``simulation.step()``) writes the tick.
+    ``TraceRecorder(simulation, stream)`` writes the header and adds itself to the simulation's
+    listeners: it collects exec pulses as nodes compute (``on_compute``) and writes each tick after
+    it ran (``on_tick``). The stream stays open: whoever opened it closes it.
     """
 
     def __init__(self, simulation, stream: IO[str], *, graph: str | None = None):
         self.simulation = simulation
         self.stream = stream
         self.instance = simulation.instance
-        self.instance.observer = self
         self._pulses: list[str] = []
         self._outputs: dict[str, Any] = {}
         self._grippers: dict[str, dict] = {}
@@ -140,12 +139,15 @@ class TraceRecorder:
         self._databases = [self.instance.database(node.name) for node in nodes]
         self._outputs = self._output_values()
         self._write_header(graph)
+        simulation.add_listener(self)
 
-    def on_compute(self, tick: int, node_name: str, fired: list[str], db) -> None:
+    def on_compute(self, instance, node_name: str, fired: list[str], db) -> None:
+        if instance is not self.instance:
+            return
         outputs = db.outputs.__dict__
         self._pulses.extend(f"{node_name}.{name}{_STATE_SUFFIX[ExecState(outputs[name])]}" for name in fired)
 
-    def record_tick(self) -> None:
+    def on_tick(self, simulation, tick: int) -> None:
         """Write the tick that just ran: pulses, changed outputs, changed gripper fields, log lines."""
         instance = self.instance
         record: dict[str, Any] = {"tick": instance.tick_count, "t": self.simulation.world.time}

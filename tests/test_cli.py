@@ -133,11 +133,12 @@ def test_gui_pacer_waits_for_simulated_time_only_when_ahead(monkeypatch):
     monkeypatch.setattr(cli.time, "perf_counter", lambda: clock[0])
     monkeypatch.setattr(cli.time, "sleep", slept.append)
     world = SimpleNamespace(time=0.0)
-    pacer = cli._RealTimePacer(world, speed=2.0)
+    simulation = SimpleNamespace(world=world)
+    pacer = cli._RealTimePacer(speed=2.0)
     world.time, clock[0] = 1.0, 100.1        # 1 s simulated at 2x = 0.5 s of wall time; 0.1 s went by
-    pacer()
+    pacer.on_tick(simulation, 1)
     world.time, clock[0] = 1.5, 101.0        # behind: no wait
-    pacer()
+    pacer.on_tick(simulation, 2)
     assert slept == [pytest.approx(0.4)]
 
 

@@ -6,7 +6,8 @@ import graphflow_nodes
 import pytest
 
 from graphflow.document import parse_document
-from graphflow.executor import CompiledGraph, GraphRuntimeError, StepBudgetExceeded
+from graphflow.compiler import compile
+from graphflow.executor import GraphRuntimeError, StepBudgetExceeded
 from graphflow.registry import Registry, default_registry
 from graphflow.spec import Attribute, NodeSpec
 from graphflow.testing import GraphHarness
@@ -63,7 +64,7 @@ def test_sequence_runs_a_downstream_completely_before_b():
          {"name": "b1", "type": "test.Record", "inputs": {"label": "b1"}}],
         [_conn("tick.outputs:tick", "seq.inputs:execIn"), _conn("seq.outputs:a", "a1.inputs:execIn"),
          _conn("a1.outputs:execOut", "a2.inputs:execIn"), _conn("seq.outputs:b", "b1.inputs:execIn")], registry)
-    instance = CompiledGraph(document, registry).instantiate()
+    instance = compile(document, registry).instantiate()
     instance.tick()
     assert record == ["a1", "a2", "b1"]
 
@@ -79,7 +80,7 @@ def test_fan_out_runs_in_connection_order_and_fan_in_fires_once_per_pulse():
         [_conn("tick.outputs:tick", "first.inputs:execIn"), _conn("tick.outputs:tick", "second.inputs:execIn"),
          _conn("first.outputs:execOut", "join.inputs:execIn"), _conn("second.outputs:execOut", "join.inputs:execIn")],
         registry)
-    instance = CompiledGraph(document, registry).instantiate()
+    instance = compile(document, registry).instantiate()
     instance.tick()
     assert record == ["first", "join", "second", "join"]
 
@@ -98,7 +99,7 @@ def test_diamond_pulls_its_top_once_per_tick():
          _conn("top.outputs:value", "left.inputs:a"), _conn("top.outputs:value", "right.inputs:a"),
          _conn("left.outputs:sum", "join.inputs:a"), _conn("right.outputs:sum", "join.inputs:b"),
          _conn("join.outputs:sum", "out.inputs:value")], registry)
-    instance = CompiledGraph(document, registry).instantiate()
+    instance = compile(document, registry).instantiate()
     instance.tick()
     instance.tick()
     assert record == ["source computed", "out", "source computed", "out"]
@@ -120,8 +121,8 @@ def test_pure_node_recomputes_when_an_exec_source_changes_within_a_tick():
          _conn("loop.outputs:loopBody", "body.inputs:execIn"), _conn("loop.outputs:element", "double.inputs:a"),
          _conn("double.outputs:product", "body.inputs:value")], registry)
     seen = []
-    instance = CompiledGraph(document, registry).instantiate(observer=types.SimpleNamespace(
-        on_compute=lambda tick, name, fired, db: seen.append(db.inputs.value) if name == "body" else None))
+    instance = compile(document, registry).instantiate(listeners=[types.SimpleNamespace(
+        on_compute=lambda instance, name, fired, db: seen.append(db.inputs.value) if name == "body" else None)])
     instance.tick()
     assert seen == [2.0, 4.0, 6.0]
     assert record == ["body"] * 3
@@ -199,7 +200,7 @@ def test_reset_returns_to_the_initial_state():
 
 def test_one_document_instanced_side_by_side_keeps_separate_state():
     document = parse_document({"format": "graphflow", "formatVersion": [1, 0], **_counting_graph()})
-    compiled = CompiledGraph(document, default_registry())
+    compiled = compile(document, default_registry())
     first, second = compiled.instantiate(), compiled.instantiate()
     for _ in range(3):
         first.tick()
@@ -218,7 +219,7 @@ def test_event_sources_fire_in_document_order():
          {"name": "x", "type": "test.Record", "inputs": {"label": "from late"}},
          {"name": "y", "type": "test.Record", "inputs": {"label": "from early"}}],
         [_conn("early.outputs:tick", "y.inputs:execIn"), _conn("late.outputs:tick", "x.inputs:execIn")], registry)
-    CompiledGraph(document, registry).instantiate().tick()
+    compile(document, registry).instantiate().tick()
     assert record == ["from late", "from early"]
 
 

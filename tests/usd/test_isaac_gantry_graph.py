@@ -11,6 +11,7 @@ world z = 1.5 - q_z - 0.15007.
 """
 import json
 from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
 
@@ -97,7 +98,8 @@ def run(tmp_path_factory):
     pad_file.write_text(json.dumps({"gamepad": [{"element": element, "time": time, "value": value}
                                                 for element, time, value in PAD_TIMELINE]}))
     log = []
-    simulation = Simulation.load(graph, on_log=lambda event: log.append((simulation.world.time, event.message)))
+    printer = SimpleNamespace(on_log=lambda event: log.append((simulation.world.time, event.message)))
+    simulation = Simulation.load(graph, listeners=[printer])
     attach_gamepad(simulation.world, scripted_pad(pad_file))
     with simulation:
         world, manager = simulation.world, manager_for(simulation.world)

@@ -75,8 +75,8 @@ def test_latent_pulses_carry_their_state(tmp_path):
         "connections": [{"src": "tick.outputs:tick", "dst": "once.inputs:execIn"},
                         {"src": "once.outputs:once", "dst": "wait.inputs:execIn"}]})
     stream = io.StringIO()
-    recorder = TraceRecorder(harness.simulation, stream)
-    harness.simulation.run(ticks=4, progress=lambda *_: recorder.record_tick())
+    TraceRecorder(harness.simulation, stream)
+    harness.simulation.run(ticks=4)
     records = [json.loads(line) for line in stream.getvalue().splitlines()[1:]]
     wait_pulses = [[p for p in r.get("pulses", []) if p.startswith("wait.")] for r in records]
     assert wait_pulses[0] == ["wait.finished:latentPush"]
@@ -109,7 +109,11 @@ def test_unwritable_trace_path_is_bad_input(tmp_path):
     assert "cannot write the trace" in result.stderr and "Traceback" not in result.stderr
 
 
-def test_recorder_attaches_as_the_instance_observer():
+def test_recorder_attaches_as_a_listener_of_the_simulation():
     simulation = Simulation(load_document(COUNTER_GRAPH))
-    recorder = TraceRecorder(simulation, io.StringIO())
-    assert simulation.instance.observer is recorder
+    stream = io.StringIO()
+    recorder = TraceRecorder(simulation, stream)
+    assert simulation.listeners == [recorder]
+    simulation.step()
+    simulation.step()
+    assert [json.loads(line)["tick"] for line in stream.getvalue().splitlines()[1:]] == [1, 2]
