@@ -99,6 +99,10 @@ class World(Protocol):
                           efforts: Sequence[float] | None = None) -> None: ...
     def get_attribute(self, prim_path: str, name: str): ...
     def set_attribute(self, prim_path: str, name: str, value) -> None: ...
+    def contacts(self, path: str) -> list:
+        """Contacts of the body at *path*: ``(other_prim, position, normal, distance, normal_force)`` each."""
+    def gravity(self) -> tuple[float, float, float]:
+        """The stage's gravity vector, m/s^2."""
     def window_keys(self):
         """The key source of the world's window (``poll(time) -> [(key, is_down)]``), or None without one."""
 
@@ -131,4 +135,4 @@ class ClockWorld:
         raise WorldError("this graph names no stage, so there are no prims to read or write")
 
     prim_pose = prim_velocity = joint_names = joint_positions = joint_velocities = _no_physics
-    set_joint_targets = get_attribute = set_attribute = _no_physics
+    set_joint_targets = get_attribute = set_attribute = contacts = gravity = _no_physics
