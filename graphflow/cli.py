@@ -153,7 +153,8 @@ def command_run(args) -> int:
     try:
         keys = scripted_keys(args.keys, args.key)
         pad = scripted_pad(args.gamepad, args.pad)
-    except (KeySpecError, PadSpecError) as error:
+        topics = _scripted_topics(args)
+    except (KeySpecError, PadSpecError, ValueError) as error:
         raise BadInput(str(error)) from None
     if args.gui:
         from .physics.native_output import route_native_stdout_to_stderr
@@ -167,11 +168,14 @@ def command_run(args) -> int:
         attach_keyboard(simulation.world, keys)
     if pad is not None:
         attach_gamepad(simulation.world, pad)
+    topic_recording = _attach_topics(args, simulation, topics)
     seconds = args.seconds
     if args.ticks is None and seconds is None:
         seconds = document.settings.get("duration")
     progress = _Progress(simulation, sys.stdout.isatty())
     after_tick, closers = [], []   # per-tick hooks (trace, video) and what to close when the run ends
+    if topic_recording is not None:
+        closers.append(topic_recording.close)
     try:
         if args.trace:
             tracer = _open_trace(args.trace, simulation, args.graph)
@@ -182,6 +186,8 @@ def command_run(args) -> int:
             after_tick.append(video.capture)
             closers.append(video.close)
     except BadInput:
+        if topic_recording is not None:
+            topic_recording.abandon()
         simulation.close()
         raise
 
@@ -210,6 +216,34 @@ def command_run(args) -> int:
     logging.getLogger("graphflow").info("%s: %d ticks, %.3f s simulated in %.2f s wall (%s)",
                                         args.graph, result.ticks, result.time, wall, reason)
     return EXIT_OK
+
+
+def _scripted_topics(args):
+    """The --topics/--topic timeline (None without either); ValueError names a bad entry."""
+    if args.topics is None and not args.topic:
+        return None
+    from .ros2.timeline import scripted_topics
+
+    return scripted_topics(args.topics, args.topic)
+
+
+def _attach_topics(args, simulation, topics):
+    """Connect the scripted topics and the --record-topics MCAP file to the world's topic bus."""
+    if topics is None and not args.record_topics:
+        return None
+    from .ros2.bus import attach_transport
+
+    if topics is not None:
+        attach_transport(simulation.world, topics)
+    if not args.record_topics:
+        return None
+    from .ros2.mcap_recording import McapRecording, RecordingError
+
+    try:
+        return attach_transport(simulation.world, McapRecording(args.record_topics))
+    except RecordingError as error:
+        simulation.close()
+        raise BadInput(str(error)) from None
 
 
 def _check_recording(args, document) -> None:
@@ -421,6 +455,13 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--pad", action="append", default=[], metavar="ELEMENT=VALUE@TIME",
                      help='scripted gamepad element (repeatable), held until changed: "Left Stick X Axis=0.5@1.0", '
                           '"Face Button Bottom=1@3"; "1:..." for pad 1')
+    run.add_argument("--topics", metavar="FILE",
+                     help='scripted ROS 2 topics for subscriber nodes: JSON {"topics": [{"topic": "/joint_command", '
+                          '"time": 0.5, "type": "sensor_msgs/msg/JointState", "message": {...}}, ...]}')
+    run.add_argument("--topic", action="append", default=[], metavar="TOPIC@TIME=JSON",
+                     help='scripted ROS 2 message (repeatable): \'/cmd_vel@1.0={"linear": {"x": 0.5}}\'')
+    run.add_argument("--record-topics", metavar="FILE.mcap",
+                     help="write every message ROS 2 publisher nodes publish to an MCAP file (ROS 2 CDR encoding)")
     run.add_argument("--log-level", default="warning", choices=["debug", "info", "warning", "error"],
                      help="Python logging level on stderr (default warning)")
     run.add_argument("--trace", metavar="FILE", help="write what happens every tick as JSON Lines (docs/trace.md)")
