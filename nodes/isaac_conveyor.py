@@ -4,6 +4,9 @@ Isaac gives the conveyor's rigid body a PhysX surface velocity; PyBullet has
 none, so on every onStep the node sets, for each free body touching the belt,
 its velocity component along the belt direction (direction in the conveyor's
 frame) to ``velocity`` m/s, leaving the other components to the physics.
+Friction acts during the step after that, so a box slips a little behind
+the belt (about 10 % at 0.2 m/s with PyBullet's default friction), where
+PhysX's surface velocity has it keep pace.
 Bodies that are links of an articulation are left alone. Texture animation
 inputs are accepted and have no effect headless.
 """

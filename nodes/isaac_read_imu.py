@@ -44,8 +44,8 @@ def compute(db):
         db.error("inputs:imuPrim is not set: no IMU to read")
     path = db.inputs.imuPrim[0]
     try:
-        orientation = db.world.prim_pose(path)[1]
-        linear, angular = db.world.prim_velocity(path)
+        position, orientation = db.world.prim_pose(path)
+        linear, angular = _velocity_at(db, path, position)
         gravity = db.world.gravity() if db.inputs.readGravity else (0.0, 0.0, 0.0)
     except WorldError as error:
         db.error(f"inputs:imuPrim: {error}")
@@ -63,3 +63,21 @@ def compute(db):
     db.outputs.orientation = tuple(float(c) for c in orientation)
     db.outputs.sensorTime = float(db.time)
     db.outputs.execOut = ExecState.ENABLED
+
+
+def _velocity_at(db, path: str, position):
+    """World velocity of the point *position* carried by *path*'s body (the nearest ancestor that is a body)."""
+    body = path
+    while body:
+        try:
+            linear, angular = db.world.prim_velocity(body)
+            break
+        except WorldError:
+            body = body.rsplit("/", 1)[0]
+    else:
+        raise WorldError(f"{path} is not on a rigid body")
+    origin = db.world.prim_pose(body)[0]
+    r = tuple(p - o for p, o in zip(position, origin))
+    carried = (angular[1] * r[2] - angular[2] * r[1], angular[2] * r[0] - angular[0] * r[2],
+               angular[0] * r[1] - angular[1] * r[0])
+    return tuple(v + c for v, c in zip(linear, carried)), tuple(angular)
