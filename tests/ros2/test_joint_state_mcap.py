@@ -92,3 +92,19 @@ def test_recording_never_overwrites(tmp_path, capsys):
     assert main(["run", str(graph), "--ticks", "1", "--record-topics", str(recording)]) == 2
     assert "already exists" in capsys.readouterr().err
     assert recording.read_bytes() == b"keep"
+
+
+def test_shipped_joint_state_graph_publishes_clock_and_follows_its_timeline(tmp_path):
+    root = Path(__file__).resolve().parents[2] / "graphs"
+    recording = tmp_path / "run.mcap"
+    assert main(["run", str(root / "ros2_joint_states.json"), "--topics", str(root / "ros2_joint_states.topics.json"),
+                 "--record-topics", str(recording)]) == 0
+    messages = _read(recording)
+    clocks = [(log_time, clock.clock) for topic, _, log_time, clock in messages if topic == "/clock"]
+    states = [state for topic, _, _, state in messages if topic == "/joint_states"]
+    assert len(clocks) == len(states) == 180   # 3 s at 60 Hz
+    assert all(log_time == clock.sec * 1_000_000_000 + clock.nanosec for log_time, clock in clocks)
+    assert clocks[-1][1].sec == 3 and clocks[-1][1].nanosec == 0
+    at_1_4_s = states[83]   # tick 84: the first command (0.5 s) has had 0.9 s
+    assert at_1_4_s.position[0] == pytest.approx(-0.5, abs=0.01) and at_1_4_s.position[2] == pytest.approx(-1.2, abs=0.01)
+    assert list(states[-1].position[:3]) == pytest.approx([-HALF_PI] * 3, abs=0.01)   # back home after the second
