@@ -10,9 +10,10 @@
   line naming what went where; inputs with no equivalent are named too.
 * Isaac's generic ROS2Publisher has one dynamic input per message field;
   they are gathered into graphflow's ``messageFields`` JSON.
-* Target prims must exist in the composed stage; when one does not because a
+* Target prims must exist in the composed stage: when one does not because a
   referenced or payloaded layer could not be opened (an online NVIDIA asset,
-  an author's local file), the line names the prim and that layer.
+  an author's local file), the import fails with a line naming the prim and
+  that layer; a target no layer defines is a warning line.
 """
 from __future__ import annotations
 
@@ -105,12 +106,15 @@ def gather_message_fields(fields: dict, where: str, notes: list[str]) -> str:
     return json.dumps(fields, sort_keys=True)
 
 
-def missing_target(stage, target: str) -> str | None:
-    """Why *target* cannot be used (naming the layer that should bring it), or None when it is fine.
+def missing_target(stage, target: str) -> tuple[str, bool] | None:
+    """Why *target* cannot be used and whether that fails the import, or None when it is fine.
 
-    A prim may exist only as an ``over`` its author kept while the referenced or
-    payloaded robot layer is absent: the nearest such layer at or above the
-    target is named in both cases.
+    A target under a reference or payload that cannot be opened (an online
+    asset, an author's local file) fails, naming that layer: the robot is not
+    there to run against. A prim may exist only as an ``over`` its author kept
+    while that layer is absent, which fails the same way. A target no layer
+    defines (a script adds it at run time, as Isaac's gantry sample does) is a
+    warning: the user can add it with a stage that sublayers the file.
     """
     from pxr import Sdf
 
@@ -121,9 +125,12 @@ def missing_target(stage, target: str) -> str | None:
         layer = _unopened_layer(prim) if prim else None
         if layer:
             state = "has no definition" if exists else "is not in the stage"
-            return f"prim {target} {state}: it comes from {layer} (referenced at {path}), which cannot be opened"
+            return f"prim {target} {state}: it comes from {layer} (referenced at {path}), which cannot be opened", True
         path = path.GetParentPath()
-    return None if exists else f"prim {target} is not in the stage (no layer of this stage defines it)"
+    if exists:
+        return None
+    return (f"prim {target} is not in the stage (no layer of this stage defines it); the node fails if it runs "
+            "unless the graph gets a stage that adds it"), False
 
 
 def _unopened_layer(prim) -> str | None:

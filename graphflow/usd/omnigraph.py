@@ -103,9 +103,10 @@ def import_graph(stage_path: str, *, graph_path: str | None = None, output_path:
         for attribute in node_type.spec.inputs:
             if attribute.attr_type.base == "target":
                 for target in inputs.get(attribute.name, ()):
-                    reason = missing_target(stage, target)
-                    if reason:
-                        problems.append(f"{label}: node '{name}' input 'inputs:{attribute.name}': {reason}")
+                    missing = missing_target(stage, target)
+                    if missing:
+                        (problems if missing[1] else warnings).append(
+                            f"{label}: node '{name}' input 'inputs:{attribute.name}': {missing[0]}")
         entry = {"name": name, "type": type_id, "inputs": inputs}
         if version is not None:
             entry["typeVersion"] = int(version)
