@@ -18,7 +18,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Iterable, Protocol
 
-from .messages import complete
+from .messages import complete, type_name as standard_type
 
 
 @dataclass(frozen=True)
@@ -68,7 +68,8 @@ class TopicBus:
 
     def publish(self, topic: str, type_name: str, message: dict) -> TopicMessage:
         """Check *message* against *type_name*, make it the topic's latest, hand it to every transport."""
-        sent = self._deliver(topic, type_name, complete(type_name, message, f"topic {topic}"))
+        full_type = standard_type(type_name)
+        sent = self._deliver(topic, full_type, complete(full_type, message, f"topic {topic}"))
         self.published.append(sent)
         for transport in self.transports:
             transport.send(sent)
