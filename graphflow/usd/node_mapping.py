@@ -5,7 +5,9 @@
   the graph runs.
 * Older node versions whose inputs moved: the v1 SurfaceGripper (a gripper
   built by the node from physical parameters) becomes graphflow's
-  LegacySurfaceGripper with the same parameters; the older
+  LegacySurfaceGripper with the same parameters (``onStep`` -> ``execIn``);
+  its connected Close/Open pins go to a current SurfaceGripper node
+  ``NAME_command`` that commands the gripper the legacy node made; the older
   PickPlaceController's robot inputs become robotPrim. Each mapping is one
   line naming what went where; inputs with no equivalent are named too.
 * Isaac's generic ROS2Publisher has one dynamic input per message field;
@@ -51,6 +53,8 @@ LEGACY_GRIPPER_UNMAPPED = {
     "Delta": "the world's time step is used",
     "enabled": "the legacy gripper has no enable switch",
 }
+LEGACY_GRIPPER_COMMANDS = ("inputs:Close", "inputs:Open")
+COMMAND_NODE_SUFFIX = "_command"
 PICK_PLACE_ID = "graphflow.PickPlaceController"
 PICK_PLACE_OLD_INPUTS = ("robotModel", "robotPrimPath", "usePath", "targetPrim")
 
@@ -77,6 +81,22 @@ def map_legacy_surface_gripper(name: str, authored: dict, where: str, notes: lis
         else:
             notes.append(f"{where}: v1 SurfaceGripper input '{old}' = {value!r} has no equivalent; dropped")
     return inputs
+
+
+def legacy_gripper_renames(name: str) -> dict:
+    """Where connections into a v1 SurfaceGripper's exec pins go: onStep to the legacy node, Close/Open to its command node."""
+    command = f"{name}{COMMAND_NODE_SUFFIX}"
+    return {(name, "inputs:onStep"): f"{name}.inputs:execIn",
+            (name, "inputs:Close"): f"{command}.inputs:Close", (name, "inputs:Open"): f"{command}.inputs:Open"}
+
+
+def legacy_gripper_command_node(name: str, where: str, notes: list[str]) -> tuple[dict, dict]:
+    """The current SurfaceGripper node that takes a v1 node's Close/Open, and its link to the legacy gripper prim."""
+    command = f"{name}{COMMAND_NODE_SUFFIX}"
+    notes.append(f"{where}: v1 SurfaceGripper Close/Open connections mapped to a new "
+                 f"{SURFACE_GRIPPER_IDS[0]} node '{command}' commanding the gripper '{name}' creates")
+    return ({"name": command, "type": SURFACE_GRIPPER_IDS[0]},
+            {"src": f"{name}.outputs:gripperPrim", "dst": f"{command}.inputs:SurfaceGripper"})
 
 
 def map_old_pick_place(authored: dict, where: str, notes: list[str], problems: list[str]) -> dict:

@@ -15,9 +15,10 @@ from pathlib import Path
 
 from ..document import FORMAT_NAME, FORMAT_VERSION, GraphDocument, parse_document
 from ..registry import Registry, default_registry
-from .node_mapping import (GENERIC_PUBLISHERS, LEGACY_GRIPPER_ID, PICK_PLACE_ID, PICK_PLACE_OLD_INPUTS,
-                           RENDERING_NODES, gather_message_fields, is_legacy_surface_gripper,
-                           map_legacy_surface_gripper, map_old_pick_place, missing_target)
+from .node_mapping import (GENERIC_PUBLISHERS, LEGACY_GRIPPER_COMMANDS, LEGACY_GRIPPER_ID, PICK_PLACE_ID,
+                           PICK_PLACE_OLD_INPUTS, RENDERING_NODES, gather_message_fields, is_legacy_surface_gripper,
+                           legacy_gripper_command_node, legacy_gripper_renames, map_legacy_surface_gripper,
+                           map_old_pick_place, missing_target)
 
 GRAPH_TYPE = "OmniGraph"
 NODE_TYPE = "OmniGraphNode"
@@ -79,14 +80,15 @@ def import_graph(stage_path: str, *, graph_path: str | None = None, output_path:
         warnings.append(f"{label}: {graph_path}: evaluator {evaluator!r} imported as an action graph (execution)")
 
     node_prims = [child for child in graph_prim.GetChildren() if child.GetTypeName() == NODE_TYPE]
-    problems, nodes, kept, ui, renames = [], [], {}, {}, {}
+    problems, nodes, kept, ui, renames, extra_connections = [], [], {}, {}, {}, []
     for prim in node_prims:
         name, type_id = prim.GetName(), _value(prim.GetAttribute("node:type"))
         version = _value(prim.GetAttribute("node:typeVersion"))
         if type_id in RENDERING_NODES:
             warnings.append(f"{label}: node '{name}' ({type_id}): dropped: {RENDERING_NODES[type_id]}")
             continue
-        if is_legacy_surface_gripper(type_id, version):
+        legacy_gripper = is_legacy_surface_gripper(type_id, version)
+        if legacy_gripper:
             type_id, version = LEGACY_GRIPPER_ID, None
         node_type = registry.get(type_id) if type_id else None
         if node_type is None:
@@ -100,6 +102,10 @@ def import_graph(stage_path: str, *, graph_path: str | None = None, output_path:
             continue
         kept[name] = node_type
         inputs = _mapped_inputs(prim, node_type, label, warnings, problems, renames)
+        if legacy_gripper and any(prim.GetAttribute(pin).GetConnections() for pin in LEGACY_GRIPPER_COMMANDS):
+            command, link = legacy_gripper_command_node(name, f"{label}: node '{name}'", warnings)
+            nodes.append(command)
+            extra_connections.append(link)
         for attribute in node_type.spec.inputs:
             if attribute.attr_type.base == "target":
                 for target in inputs.get(attribute.name, ()):
@@ -119,7 +125,7 @@ def import_graph(stage_path: str, *, graph_path: str | None = None, output_path:
     if problems:
         raise ImportProblem(problems)
 
-    connections = _connections(node_prims, graph_prim.GetPath(), kept, label, warnings, renames)
+    connections = _connections(node_prims, graph_prim.GetPath(), kept, label, warnings, renames) + extra_connections
     settings = {"evaluator": "execution", "stage": _stage_reference(stage_path, output_path)}
     data = {"format": FORMAT_NAME, "formatVersion": list(FORMAT_VERSION),
             "description": f"Imported from {Path(stage_path).name}:{graph_path}",
@@ -170,8 +176,7 @@ def _mapped_inputs(prim, node_type, label: str, warnings: list[str], problems: l
     name, spec = prim.GetName(), node_type.spec
     where = f"{label}: node '{name}'"
     if spec.id == LEGACY_GRIPPER_ID and _value(prim.GetAttribute("node:type")) != LEGACY_GRIPPER_ID:
-        renames.update({(name, "inputs:onStep"): "inputs:execIn", (name, "inputs:Close"): None,
-                        (name, "inputs:Open"): None})
+        renames.update(legacy_gripper_renames(name))
         return map_legacy_surface_gripper(name, _raw_inputs(prim), where, warnings)
     if spec.id == PICK_PLACE_ID:
         raw = _raw_inputs(prim)
@@ -181,7 +186,7 @@ def _mapped_inputs(prim, node_type, label: str, warnings: list[str], problems: l
     if spec.id in GENERIC_PUBLISHERS:
         fields = {key: value for key, value in _raw_inputs(prim).items() if spec.attribute(f"inputs:{key}") is None}
         for key in fields:
-            renames[(name, f"inputs:{key}")] = None
+            renames[(name, f"inputs:{key}")] = None   # a field attribute has no port to connect to
         inputs = _authored_inputs(prim, node_type, label, [])
         if fields:
             inputs["messageFields"] = gather_message_fields(fields, where, warnings)
@@ -231,14 +236,14 @@ def _connections(node_prims, graph_path, kept: dict, label: str, warnings: list[
                 if source_node.name not in kept:
                     warnings.append(f"{where}: connection from {source} (no such imported node); dropped")
                     continue
-                target_name = renames.get((prim.GetName(), name), name)
-                if target_name is None:
+                destination = renames.get((prim.GetName(), name), f"{prim.GetName()}.{name}")
+                if destination is None:
                     warnings.append(f"{where}: connection from {source} has no equivalent input in graphflow's node; dropped")
                     continue
                 if source_name.startswith("inputs:"):
                     # Kit lets constants be read from their input; graphflow's constants expose it as an output
                     source_name = "outputs:" + source_name.split(":", 1)[1]
-                connections.append({"src": f"{source_node.name}.{source_name}", "dst": f"{prim.GetName()}.{target_name}"})
+                connections.append({"src": f"{source_node.name}.{source_name}", "dst": destination})
     return connections
 
 
