@@ -153,8 +153,8 @@ def command_run(args) -> int:
     try:
         keys = scripted_keys(args.keys, args.key)
         pad = scripted_pad(args.gamepad, args.pad)
-        topics = _scripted_topics(args)
-    except (KeySpecError, PadSpecError, ValueError) as error:
+        topics = _ros2_run().check_options(args.topics, args.topic, args.record_topics)
+    except (KeySpecError, PadSpecError, *_ros2_run().RunOptionError) as error:
         raise BadInput(str(error)) from None
     if args.gui:
         from .physics.native_output import route_native_stdout_to_stderr
@@ -168,7 +168,7 @@ def command_run(args) -> int:
         attach_keyboard(simulation.world, keys)
     if pad is not None:
         attach_gamepad(simulation.world, pad)
-    topic_recording = _attach_topics(args, simulation, topics)
+    topic_recording = _ros2_run().attach_topics(simulation.world, topics, args.record_topics)
     seconds = args.seconds
     if args.ticks is None and seconds is None:
         seconds = document.settings.get("duration")
@@ -218,32 +218,11 @@ def command_run(args) -> int:
     return EXIT_OK
 
 
-def _scripted_topics(args):
-    """The --topics/--topic timeline (None without either); ValueError names a bad entry."""
-    if args.topics is None and not args.topic:
-        return None
-    from .ros2.timeline import scripted_topics
+def _ros2_run():
+    """graphflow.ros2.run, imported when a run is set up (not for the other commands)."""
+    from .ros2 import run
 
-    return scripted_topics(args.topics, args.topic)
-
-
-def _attach_topics(args, simulation, topics):
-    """Connect the scripted topics and the --record-topics MCAP file to the world's topic bus."""
-    if topics is None and not args.record_topics:
-        return None
-    from .ros2.bus import attach_transport
-
-    if topics is not None:
-        attach_transport(simulation.world, topics)
-    if not args.record_topics:
-        return None
-    from .ros2.mcap_recording import McapRecording, RecordingError
-
-    try:
-        return attach_transport(simulation.world, McapRecording(args.record_topics))
-    except RecordingError as error:
-        simulation.close()
-        raise BadInput(str(error)) from None
+    return run
 
 
 def _check_recording(args, document) -> None:

@@ -19,15 +19,21 @@ class RecordingError(ValueError):
     """The recording cannot be made (file exists, folder missing, library missing)."""
 
 
+def check_recording_path(path: str | Path) -> Path:
+    """*path* as a Path when a recording may be written there; RecordingError (one line) when not."""
+    path = Path(path)
+    if path.exists():
+        raise RecordingError(f"{path}: already exists; not overwriting it")
+    if not path.parent.is_dir():
+        raise RecordingError(f"{path}: folder {path.parent} does not exist")
+    return path
+
+
 class McapRecording:
     """A bus ``Transport`` that writes every published message; receives nothing."""
 
     def __init__(self, path: str | Path):
-        self.path = Path(path)
-        if self.path.exists():
-            raise RecordingError(f"{self.path}: already exists; not overwriting it")
-        if not self.path.parent.is_dir():
-            raise RecordingError(f"{self.path}: folder {self.path.parent} does not exist")
+        self.path = check_recording_path(path)
         try:
             from mcap.writer import CompressionType
             from mcap_ros2.writer import Writer
