@@ -25,7 +25,7 @@ UR10_JOINTS = ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint",
 HALF_PI = math.pi / 2
 COMMAND = {"name": ["shoulder_pan_joint", "elbow_joint"], "position": [0.5, -0.3]}
 
-pytestmark = pytest.mark.skipif(not LITE6_GRAPH.is_file(), reason="../shared/isaac_corpus is absent")
+needs_corpus = pytest.mark.skipif(not LITE6_GRAPH.is_file(), reason="../shared/isaac_corpus is absent")
 
 
 def _graph_on_ur10(tmp_path) -> Path:
@@ -48,6 +48,7 @@ def _read(path: Path) -> list:
                 for schema, channel, message, decoded in reader.iter_decoded_messages()]
 
 
+@needs_corpus
 def test_scripted_joint_command_moves_the_arm_and_the_mcap_holds_the_joint_states(tmp_path):
     graph = _graph_on_ur10(tmp_path)
     topics = tmp_path / "commands.json"
@@ -73,6 +74,7 @@ def test_scripted_joint_command_moves_the_arm_and_the_mcap_holds_the_joint_state
     assert moving[5] == pytest.approx(-HALF_PI, abs=1e-3) and moving[30] > -HALF_PI + 0.1
 
 
+@needs_corpus
 def test_command_on_the_command_line_and_trace_records_published_messages(tmp_path):
     graph = _graph_on_ur10(tmp_path)
     trace = tmp_path / "run.jsonl"
@@ -85,6 +87,7 @@ def test_command_on_the_command_line_and_trace_records_published_messages(tmp_pa
     assert last["name"] == UR10_JOINTS and last["position"][5] > 0.3   # the wrist turns towards 1 rad
 
 
+@needs_corpus
 def test_recording_never_overwrites(tmp_path, capsys):
     graph = _graph_on_ur10(tmp_path)
     recording = tmp_path / "run.mcap"
