@@ -2,6 +2,6 @@
 
 ``bus`` holds the world service every ROS 2 bridge node talks to;
 ``messages`` checks messages against the standard ROS 2 definitions (rosbags'
-type store); ``timeline`` reads scripted topics (``graphflow run --topics``);
+type store); ``timeline`` reads scripted topics (``graphflow run --topics``); ``run`` wires both into a run;
 ``mcap_recording`` writes published messages to MCAP with CDR encoding.
 """
