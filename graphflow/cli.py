@@ -171,7 +171,8 @@ def command_run(args) -> int:
     try:
         keys = scripted_keys(args.keys, args.key)
         pad = scripted_pad(args.gamepad, args.pad)
-    except (KeySpecError, PadSpecError) as error:
+        topics = _ros2_run().check_options(args.topics, args.topic, args.record_topics)
+    except (KeySpecError, PadSpecError, *_ros2_run().RunOptionError) as error:
         raise BadInput(str(error)) from None
     if args.gui:
         from .physics.native_output import route_native_stdout_to_stderr
@@ -185,16 +186,19 @@ def command_run(args) -> int:
         attach_keyboard(simulation.world, keys)
     if pad is not None:
         attach_gamepad(simulation.world, pad)
+    topic_recording = _ros2_run().attach_topics(simulation.world, topics, args.record_topics)
     seconds = args.seconds
     if args.ticks is None and seconds is None:
         seconds = document.settings.get("duration")
-    trace_stream = None   # the trace file is ours to close; every other per-tick job is a listener
+    trace_stream = None   # the trace file and the topic recording are ours to close; per-tick jobs are listeners
     try:
         if args.trace:
             trace_stream = _open_trace(args.trace, simulation, args.graph)
         if args.record:
             simulation.add_listener(_VideoFrames(_start_recording(args, simulation.world)))
     except BadInput:
+        if topic_recording is not None:
+            topic_recording.abandon()
         simulation.close()
         raise
     if args.gui and args.speed > 0:
@@ -211,12 +215,21 @@ def command_run(args) -> int:
     finally:
         if trace_stream is not None:
             trace_stream.close()
+        if topic_recording is not None:
+            topic_recording.close()
         simulation.close()
     wall = time.perf_counter() - started
     reason = "graph finished" if result.stopped_by_graph else "limit reached"
     logging.getLogger("graphflow").info("%s: %d ticks, %.3f s simulated in %.2f s wall (%s)",
                                         args.graph, result.ticks, result.time, wall, reason)
     return EXIT_OK
+
+
+def _ros2_run():
+    """graphflow.ros2.run, imported when a run is set up (not for the other commands)."""
+    from .ros2 import run
+
+    return run
 
 
 def _check_recording(args, document) -> None:
@@ -450,6 +463,13 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--pad", action="append", default=[], metavar="ELEMENT=VALUE@TIME",
                      help='scripted gamepad element (repeatable), held until changed: "Left Stick X Axis=0.5@1.0", '
                           '"Face Button Bottom=1@3"; "1:..." for pad 1')
+    run.add_argument("--topics", metavar="FILE",
+                     help='scripted ROS 2 topics for subscriber nodes: JSON {"topics": [{"topic": "/joint_command", '
+                          '"time": 0.5, "type": "sensor_msgs/msg/JointState", "message": {...}}, ...]}')
+    run.add_argument("--topic", action="append", default=[], metavar="TOPIC@TIME=JSON",
+                     help='scripted ROS 2 message (repeatable): \'/cmd_vel@1.0={"linear": {"x": 0.5}}\'')
+    run.add_argument("--record-topics", metavar="FILE.mcap",
+                     help="write every message ROS 2 publisher nodes publish to an MCAP file (ROS 2 CDR encoding)")
     run.add_argument("--log-level", default="warning", choices=["debug", "info", "warning", "error"],
                      help="Python logging level on stderr (default warning)")
     run.add_argument("--trace", metavar="FILE", help="write what happens every tick as JSON Lines (docs/trace.md)")

@@ -78,6 +78,13 @@ def surface_gripper_manager(world):
     return world.services.get(SurfaceGripperManager)
 
 
+def published_topics(world) -> list[dict]:
+    """ROS 2 messages published during the tick (``topic``, ``type``, ``message``), when the run has a topic bus."""
+    from graphflow.ros2.bus import published_this_tick
+
+    return published_this_tick(world)
+
+
 @dataclass(frozen=True)
 class GripperSample:
     """One gripper as seen after a tick: status, gripped objects, holding force, held height."""
@@ -169,6 +176,9 @@ class TraceRecorder:
             self._grippers[path] = fields
         if grippers:
             record["grippers"] = grippers
+        topics = published_topics(self.simulation.world)
+        if topics:
+            record["topics"] = topics
         logs = []
         for event in reversed(instance.events):   # this tick's lines are the newest
             if event.tick != instance.tick_count:

@@ -101,8 +101,32 @@ class World(Protocol):
                           efforts: Sequence[float] | None = None) -> None: ...
     def get_attribute(self, prim_path: str, name: str): ...
     def set_attribute(self, prim_path: str, name: str, value) -> None: ...
+    def contacts(self, path: str) -> list:
+        """Contacts of the body at *path*: ``(other_prim, position, normal, distance, normal_force)`` each."""
+    def gravity(self) -> tuple[float, float, float]:
+        """The stage's gravity vector, m/s^2."""
     def window_keys(self):
         """The key source of the world's window (``poll(time) -> [(key, is_down)]``), or None without one."""
+
+
+def on_nearest_ancestor(path: str, query: Callable[[str], ServiceT]) -> tuple[str, ServiceT]:
+    """``(prim, query(prim))`` for *path* or, where the world refuses it, its nearest ancestor that it accepts.
+
+    Sensors and publishers name a prim under the body or articulation they read.
+    A relative path is refused at once (walking up it would never end); when no
+    ancestor is accepted, the world's refusal of *path* itself is raised.
+    """
+    if not path.startswith("/"):
+        raise WorldError(f"{path!r} is not an absolute prim path")
+    refusal = None
+    candidate = path
+    while candidate:
+        try:
+            return candidate, query(candidate)
+        except WorldError as error:
+            refusal = refusal or error
+        candidate = candidate.rsplit("/", 1)[0]
+    raise refusal
 
 
 class ClockWorld:
@@ -133,4 +157,4 @@ class ClockWorld:
         raise WorldError("this graph names no stage, so there are no prims to read or write")
 
     prim_pose = prim_velocity = joint_names = joint_positions = joint_velocities = _no_physics
-    set_joint_targets = get_attribute = set_attribute = _no_physics
+    set_joint_targets = get_attribute = set_attribute = contacts = gravity = _no_physics

@@ -29,6 +29,12 @@ STAGE_INPUTS = {
     "isaacsim.robot.surface_gripper.SurfaceGripper": {"SurfaceGripper": GRIPPER},
     "omni.graph.nodes.ReadPrimAttribute": {"prim": CUBE, "name": "physics:mass"},
     "omni.graph.nodes.WritePrimAttribute": {"prim": CUBE, "name": "physics:mass", "value": 0.5},
+    "isaacsim.asset.gen.conveyor.IsaacConveyor": {"conveyorPrim": CUBE},
+    "isaacsim.robot.manipulators.IsaacGripperController": {"articulationRootPrim": UR10, "jointNames": ["wrist_3_joint"],
+                                                           "openPosition": [0.0], "closePosition": [0.5]},
+    "isaacsim.ros2.bridge.ROS2PublishJointState": {"targetPrim": UR10},
+    "isaacsim.sensors.physics.IsaacReadContactSensor": {"csPrim": CUBE},
+    "isaacsim.sensors.physics.IsaacReadIMU": {"imuPrim": CUBE},
 }
 
 TYPES = default_registry().types()

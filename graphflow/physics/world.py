@@ -518,6 +518,9 @@ class PyBulletWorld:
                                      fraction * length))
         return result
 
+    def gravity(self) -> tuple[float, float, float]:
+        return tuple(float(g) for g in self.description.gravity)
+
     def contacts(self, path: str) -> list[Contact]:
         handle = self._body(path)
         points = self.client.getContactPoints(bodyA=handle.body_id, linkIndexA=handle.link)

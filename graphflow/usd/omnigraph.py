@@ -15,6 +15,10 @@ from pathlib import Path
 
 from ..document import FORMAT_NAME, FORMAT_VERSION, GraphDocument, parse_document
 from ..registry import Registry, default_registry
+from .node_mapping import (GENERIC_PUBLISHERS, LEGACY_GRIPPER_COMMANDS, LEGACY_GRIPPER_ID, PICK_PLACE_ID,
+                           PICK_PLACE_OLD_INPUTS, RENDERING_NODES, gather_message_fields, is_legacy_surface_gripper,
+                           legacy_gripper_command_node, legacy_gripper_renames, map_legacy_surface_gripper,
+                           map_old_pick_place, missing_target)
 
 GRAPH_TYPE = "OmniGraph"
 NODE_TYPE = "OmniGraphNode"
@@ -76,9 +80,16 @@ def import_graph(stage_path: str, *, graph_path: str | None = None, output_path:
         warnings.append(f"{label}: {graph_path}: evaluator {evaluator!r} imported as an action graph (execution)")
 
     node_prims = [child for child in graph_prim.GetChildren() if child.GetTypeName() == NODE_TYPE]
-    problems, nodes, kept, ui = [], [], {}, {}
+    problems, nodes, kept, ui, renames, extra_connections = [], [], {}, {}, {}, []
     for prim in node_prims:
         name, type_id = prim.GetName(), _value(prim.GetAttribute("node:type"))
+        version = _value(prim.GetAttribute("node:typeVersion"))
+        if type_id in RENDERING_NODES:
+            warnings.append(f"{label}: node '{name}' ({type_id}): dropped: {RENDERING_NODES[type_id]}")
+            continue
+        legacy_gripper = is_legacy_surface_gripper(type_id, version)
+        if legacy_gripper:
+            type_id, version = LEGACY_GRIPPER_ID, None
         node_type = registry.get(type_id) if type_id else None
         if node_type is None:
             message = f"{label}: node '{name}' ({prim.GetPath()}): unknown node type {type_id!r}"
@@ -90,8 +101,19 @@ def import_graph(stage_path: str, *, graph_path: str | None = None, output_path:
                 problems.append(message)
             continue
         kept[name] = node_type
-        entry = {"name": name, "type": type_id, "inputs": _authored_inputs(prim, node_type, label, warnings)}
-        version = _value(prim.GetAttribute("node:typeVersion"))
+        inputs = _mapped_inputs(prim, node_type, label, warnings, problems, renames)
+        if legacy_gripper and any(prim.GetAttribute(pin).GetConnections() for pin in LEGACY_GRIPPER_COMMANDS):
+            command, link = legacy_gripper_command_node(name, f"{label}: node '{name}'", warnings)
+            nodes.append(command)
+            extra_connections.append(link)
+        for attribute in node_type.spec.inputs:
+            if attribute.attr_type.base == "target":
+                for target in inputs.get(attribute.name, ()):
+                    missing = missing_target(stage, target)
+                    if missing:
+                        (problems if missing[1] else warnings).append(
+                            f"{label}: node '{name}' input 'inputs:{attribute.name}': {missing[0]}")
+        entry = {"name": name, "type": type_id, "inputs": inputs}
         if version is not None:
             entry["typeVersion"] = int(version)
         if not entry["inputs"]:
@@ -103,7 +125,7 @@ def import_graph(stage_path: str, *, graph_path: str | None = None, output_path:
     if problems:
         raise ImportProblem(problems)
 
-    connections = _connections(node_prims, graph_prim.GetPath(), kept, label, warnings)
+    connections = _connections(node_prims, graph_prim.GetPath(), kept, label, warnings, renames) + extra_connections
     settings = {"evaluator": "execution", "stage": _stage_reference(stage_path, output_path)}
     data = {"format": FORMAT_NAME, "formatVersion": list(FORMAT_VERSION),
             "description": f"Imported from {Path(stage_path).name}:{graph_path}",
@@ -139,12 +161,54 @@ def _authored_inputs(prim, node_type, label: str, warnings: list[str]) -> dict:
                 inputs[attribute.name] = targets
             continue
         value = _value(prop)
-        if value is None:
-            # Kit stores extended ("any") inputs as a token plus the resolved value in customData
-            value = _plain(prop.GetCustomDataByKey(EXTENDED_VALUE))
+        stored = _plain(prop.GetCustomDataByKey(EXTENDED_VALUE))
+        if stored is not None and value in (None, ""):
+            # Kit stores extended ("any") inputs as a token plus the resolved value in customData, and reads that
+            # value when the token is empty (a sublayer may author "" over it)
+            value = stored
         if value is not None and not prop.HasAuthoredConnections():
             inputs[attribute.name] = value
     return inputs
+
+
+def _mapped_inputs(prim, node_type, label: str, warnings: list[str], problems: list[str], renames: dict) -> dict:
+    """Authored inputs for graphflow's node, with older node versions and dynamic inputs mapped (node_mapping)."""
+    name, spec = prim.GetName(), node_type.spec
+    where = f"{label}: node '{name}'"
+    if spec.id == LEGACY_GRIPPER_ID and _value(prim.GetAttribute("node:type")) != LEGACY_GRIPPER_ID:
+        renames.update(legacy_gripper_renames(name))
+        return map_legacy_surface_gripper(name, _raw_inputs(prim), where, warnings)
+    if spec.id == PICK_PLACE_ID:
+        raw = _raw_inputs(prim)
+        old = {key: value for key, value in raw.items() if key in PICK_PLACE_OLD_INPUTS}
+        current = _authored_inputs(prim, node_type, label, [])
+        return {**current, **map_old_pick_place(old, where, warnings, problems)} if old else current
+    if spec.id in GENERIC_PUBLISHERS:
+        fields = {key: value for key, value in _raw_inputs(prim).items() if spec.attribute(f"inputs:{key}") is None}
+        for key in fields:
+            renames[(name, f"inputs:{key}")] = None   # a field attribute has no port to connect to
+        inputs = _authored_inputs(prim, node_type, label, [])
+        if fields:
+            inputs["messageFields"] = gather_message_fields(fields, where, warnings)
+        return inputs
+    return _authored_inputs(prim, node_type, label, warnings)
+
+
+def _raw_inputs(prim) -> dict:
+    """Every authored, unconnected input with content, by bare name (relationships as lists of paths)."""
+    values = {}
+    for prop in prim.GetAuthoredProperties():
+        if not prop.GetName().startswith("inputs:"):
+            continue
+        key = prop.GetName().split(":", 1)[1]
+        if hasattr(prop, "GetTargets"):
+            if prop.GetTargets():
+                values[key] = [str(path) for path in prop.GetTargets()]
+            continue
+        value = _value(prop)
+        if value is not None and not prop.HasAuthoredConnections():
+            values[key] = value
+    return values
 
 
 def _has_content(prop) -> bool:
@@ -153,7 +217,7 @@ def _has_content(prop) -> bool:
     return prop.HasAuthoredValue() or prop.HasAuthoredConnections() or prop.GetCustomDataByKey(EXTENDED_VALUE) is not None
 
 
-def _connections(node_prims, graph_path, kept: dict, label: str, warnings: list[str]) -> list[dict]:
+def _connections(node_prims, graph_path, kept: dict, label: str, warnings: list[str], renames: dict) -> list[dict]:
     connections = []
     for prim in node_prims:
         if prim.GetName() not in kept:
@@ -172,10 +236,14 @@ def _connections(node_prims, graph_path, kept: dict, label: str, warnings: list[
                 if source_node.name not in kept:
                     warnings.append(f"{where}: connection from {source} (no such imported node); dropped")
                     continue
+                destination = renames.get((prim.GetName(), name), f"{prim.GetName()}.{name}")
+                if destination is None:
+                    warnings.append(f"{where}: connection from {source} has no equivalent input in graphflow's node; dropped")
+                    continue
                 if source_name.startswith("inputs:"):
                     # Kit lets constants be read from their input; graphflow's constants expose it as an output
                     source_name = "outputs:" + source_name.split(":", 1)[1]
-                connections.append({"src": f"{source_node.name}.{source_name}", "dst": f"{prim.GetName()}.{name}"})
+                connections.append({"src": f"{source_node.name}.{source_name}", "dst": destination})
     return connections
 
 

@@ -1,0 +1,202 @@
+"""The Isaac corpus as tests: every real file, imported, validated and run as a new user would.
+
+``../shared/isaac_corpus`` holds 29 public .usda files from 14 repositories
+(README and manifest.json there). For each graph the test runs
+``graphflow import`` -> ``graphflow validate`` -> ``graphflow run --ticks 120``
+and checks the outcome written down below: it runs (with the lines the import
+must print, e.g. a dropped rendering node), or it fails with this line and why.
+Physics-only files are loaded with ``graphflow stage`` (their simulation
+belongs to the physics tests). Skips cleanly when the folder is absent.
+"""
+import json
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+
+from graphflow.cli import main
+
+CORPUS = Path(__file__).resolve().parents[3] / "shared" / "isaac_corpus"
+pytestmark = pytest.mark.skipif(not (CORPUS / "manifest.json").is_file(), reason="../shared/isaac_corpus is absent")
+TICKS = 120
+
+
+@dataclass(frozen=True)
+class Runs:
+    """Imports, validates and runs TICKS ticks (every graph of the file); *lines* must be among the import's lines."""
+    lines: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Fails:
+    """Fails at *stage* ("import" or "run") with a line containing *line*, for the reason *why*."""
+    stage: str
+    line: str
+    why: str
+
+
+@dataclass(frozen=True)
+class Loads:
+    """A physics-only file: ``graphflow stage`` loads it (simulating it is the physics tests' business)."""
+
+
+RENDER = "dropped: needs Kit's RTX renderer (render products do not exist headless)"
+RIDGEBACK = ("prim /World/ridgeback_ur5 has no definition: it comes from https://omniverse-content-production.s3-"
+             "us-west-2.amazonaws.com/Assets/Isaac/5.1/Isaac/Robots/Clearpath/RidgebackUr/ridgeback_ur5.usd "
+             "(referenced at /World/ridgeback_ur5), which cannot be opened")
+EXPECTED = {
+    # NVIDIA's example script creates the gripper prim at run time: the file alone has none (pressing the button
+    # fails, below; tests/usd/test_isaac_gantry_graph.py adds the gripper with a wrapper stage and grips)
+    "g01_isaacsim_gantry": Runs(("node 'surface_gripper' input 'inputs:SurfaceGripper': prim /World/SurfaceGripper "
+                                 "is not in the stage (no layer of this stage defines it)",)),
+    "g02_isaacsim_rename_node_type": Runs(),
+    "g03_vla_ur5e_ros2": Fails(
+        "import", "prim /World/ur5e/base_link_inertia has no definition: it comes from /home/sheil/Development/"
+        "VLA_Arm_Controller/urdf/ur5e_with_gripper/ur5e_with_gripper.usd (referenced at /World/ur5e)",
+        "the UR5e is the author's local file, not in the repository"),
+    "g04_krabby_crab_simple": Runs(),
+    "g05_spot_diffdrive_ros2": Runs(),
+    "g06_ridgeback_velocity": Fails("import", RIDGEBACK, "the Ridgeback is an online NVIDIA asset"),
+    "g07_ridgeback_ros2_twist": Fails("import", RIDGEBACK, "the Ridgeback is an online NVIDIA asset"),
+    "g08_ridgeback_sensors_ros2": Runs((
+        f"node 'RenderProduct' (isaacsim.core.nodes.IsaacCreateRenderProduct): {RENDER}",
+        "node 'RGBPublish' (isaacsim.ros2.bridge.ROS2CameraHelper): dropped: publishes rendered camera images",
+        "node 'CameraInfoPublish' (isaacsim.ros2.bridge.ROS2CameraInfoHelper): dropped:",
+        "node 'LaserScanPublish' (isaacsim.ros2.bridge.ROS2RtxLidarHelper): dropped: publishes RTX lidar scans")),
+    "g09_hospital_ros2_clock": Runs(),
+    "g10_office_ros2_clock": Runs(),
+    "g11_newton_ant_multi_sdg": Runs(),
+    "g12_ogn_articulation_controller": Runs(),
+    "g13_ogn_on_physics_step": Runs(),
+    "g14_ogn_surface_gripper_v1": Runs((
+        "v1 SurfaceGripper input 'GripThreshold' mapped to graphflow.LegacySurfaceGripper 'gripThreshold'",
+        "v1 SurfaceGripper input 'ForceLimit' mapped to graphflow.LegacySurfaceGripper 'forceLimit' = 1000000.0",
+        "v1 SurfaceGripper input 'TorqueLimit' mapped to graphflow.LegacySurfaceGripper 'torqueLimit' = 1000000.0",
+        "v1 SurfaceGripper input 'BendAngle' mapped to graphflow.LegacySurfaceGripper 'bendAngle' = 7.5 deg -> 0.1308996938995747 rad",
+        "v1 SurfaceGripper input 'Stiffness' mapped to graphflow.LegacySurfaceGripper 'kp' = 10000.0",
+        "v1 SurfaceGripper input 'Damping' mapped to graphflow.LegacySurfaceGripper 'kd' = 1000.0",
+        "v1 SurfaceGripper input 'DisableGravity' mapped to graphflow.LegacySurfaceGripper 'disableGravity' = True",
+        "v1 SurfaceGripper input 'RetryClose' = False not mapped: graphflow's legacy gripper closes once per command")),
+    "g15_ogn_gripper_controller": Runs(),
+    "g16_ogn_conveyor": Runs(),
+    "g17_ogn_pick_place_controller": Runs((
+        "old PickPlaceController input 'robotModel' = '' mapped: the controller drives the UR10",
+        "old PickPlaceController input 'usePath' = False mapped: no robot given; set robotPrim",
+        "old PickPlaceController input 'robotPrimPath' = '' mapped: no robot given; set robotPrim")),
+    "g18_ogn_differential_controller": Runs(),
+    "g19_robotiq_gripper_ros2": Runs(),   # no robot in its controller: fails on the first /isaac_gripper_state (below)
+    "g20_lite6_ros2_joint_states": Fails(
+        "run", "node 'PublisherJointState': inputs:targetPrim is not set: no articulation to publish",
+        "a layer meant to be sublayered into the Lite6 asset, which fills in the robot targets"),
+    "g21_finsrov_ros2": Runs((
+        "node 'Pose': message field inputs header:frame_id, pose:covariance gathered into 'inputs:messageFields'",
+        "node 'Dvl': message field inputs header:frame_id, twist:covariance gathered into 'inputs:messageFields'")),
+    "p01_krabby_crab_hex": Loads(),
+    "p02_newton_ant": Loads(),
+    "p03_newton_humanoid": Loads(),
+    "p04_newton_cartpole": Loads(),
+    "p05_newton_mesh_articulation": Loads(),
+    "p06_robotiq_2f85": Loads(),
+    "p07_food_tray": Loads(),
+    "p08_franka_isaac50": Loads(),
+}
+
+
+def _entries():
+    if not (CORPUS / "manifest.json").is_file():
+        return []
+    return json.loads((CORPUS / "manifest.json").read_text())["entries"]
+
+
+def _run_entry(entry, tmp_path, capsys):
+    """The entry's outcome: ("runs", import lines) or ("fails at STAGE", the error lines)."""
+    main_file = CORPUS / "files" / entry["main"]
+    if not entry["contents"]["graphs"]:
+        code = main(["stage", str(main_file)])
+        return ("loads" if code == 0 else "fails at load", capsys.readouterr().err)
+    lines = []
+    for index, graph in enumerate(entry["contents"]["graphs"]):
+        output = tmp_path / f"graph{index}.json"
+        code = main(["import", str(main_file), "--graph", graph["path"], "-o", str(output)])
+        err = capsys.readouterr().err
+        lines.extend(err.splitlines())
+        if code != 0:
+            return "fails at import", err
+        if main(["validate", str(output)]) != 0:
+            return "fails at validate", capsys.readouterr().err
+        if main(["run", str(output), "--ticks", str(TICKS)]) != 0:
+            return "fails at run", capsys.readouterr().err
+        capsys.readouterr()
+    return "runs", "\n".join(lines)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("entry", _entries(), ids=lambda entry: entry["id"])
+def test_corpus_file_has_its_written_down_outcome(entry, tmp_path, capsys):
+    expected = EXPECTED[entry["id"]]
+    outcome, text = _run_entry(entry, tmp_path, capsys)
+    if isinstance(expected, Fails):
+        assert outcome == f"fails at {expected.stage}", text
+        assert expected.line in text
+        assert len([line for line in text.splitlines() if line.strip()]) <= 2   # one line (per node input naming it)
+    elif isinstance(expected, Loads):
+        assert outcome == "loads", text
+    else:
+        assert outcome == "runs", text
+        for line in expected.lines:
+            assert line in text
+
+
+def test_every_corpus_entry_has_a_written_down_outcome_and_enough_run():
+    ids = [entry["id"] for entry in _entries()]
+    assert sorted(ids) == sorted(EXPECTED) and len(ids) == 29
+    runnable = [name for name, outcome in EXPECTED.items() if not isinstance(outcome, Fails)]
+    assert len(runnable) >= 25
+
+
+def test_robotiq_graph_without_a_robot_fails_on_its_first_joint_command(tmp_path, capsys):
+    stage = CORPUS / "files" / "pastoriomarco__isaac_sim_custom_examples" / "robotiq_action_graph.usda"
+    graph = tmp_path / "robotiq.json"
+    assert main(["import", str(stage), "-o", str(graph)]) == 0
+    code = main(["run", str(graph), "--ticks", "30",
+                 "--topic", '/isaac_gripper_state@0.25={"name": ["finger_joint"], "position": [0.4]}'])
+    assert code == 1
+    assert "node 'articulation_controller'" in capsys.readouterr().err
+
+
+def test_gantry_without_its_gripper_prim_fails_when_the_button_toggles_it(tmp_path, capsys):
+    stage = CORPUS / "files" / "isaac-sim__IsaacSim" / "SurfaceGripper_gantry.usda"
+    graph = tmp_path / "gantry.json"
+    assert main(["import", str(stage), "-o", str(graph)]) == 0
+    assert main(["run", str(graph), "--ticks", "30", "--pad", "Face Button Bottom=1@0.2"]) == 1
+    assert "node 'surface_gripper'" in capsys.readouterr().err
+
+
+def test_ridgeback_extended_input_takes_kits_stored_value_over_the_sublayers_empty_token(tmp_path, capsys):
+    """ridgeback_robot.usda authors input0 = "" over the stage's ConstructArray; Kit reads the stored 1.0."""
+    wrapper = tmp_path / "ridgeback_with_robot.usda"
+    wrapper.write_text(f'''#usda 1.0
+(
+    subLayers = [@{CORPUS / "files" / "cezarioa__isaac-projects" / "ridgebacl_stage.usda"}@]
+)
+
+def Xform "Robot"
+{{
+}}
+
+over "Graphs"
+{{
+    over "Velocity_Controller"
+    {{
+        over "ArticulationController"
+        {{
+            rel inputs:targetPrim = </Robot>
+        }}
+    }}
+}}
+''')
+    graph = tmp_path / "ridgeback.json"
+    assert main(["import", str(wrapper), "--graph", "/Graphs/Velocity_Controller", "-o", str(graph)]) == 0
+    nodes = {node["name"]: node for node in json.loads(graph.read_text())["nodes"]}
+    assert nodes["JointCommandArray"]["inputs"]["input0"] == 1.0
+    assert nodes["JointNameArray"]["inputs"]["input0"] == "dummy_base_prismatic_x_joint"
