@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 from enum import IntEnum
 from typing import Any, Callable
 
-from graphflow.usd.transforms import AXIS_VECTORS, Pose, quat_rotate
+from graphflow.poses import AXIS_VECTORS, Pose, quat_rotate
 
 AXIS_NAMES = ("transX", "transY", "transZ", "rotX", "rotY", "rotZ")
 SETTLING_DELAY = 10          # physics steps before force checks after an attach or break (m_settlingDelay)

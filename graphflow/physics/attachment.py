@@ -55,7 +55,7 @@ from dataclasses import dataclass, field, replace
 import pybullet
 
 from graphflow.gripper.runtime import RIGID, AxisCompliance
-from graphflow.usd.transforms import AXIS_VECTORS, Pose, compose, invert, quat_rotate, relative
+from graphflow.poses import AXIS_VECTORS, Pose, compose, invert, quat_rotate, relative
 
 HOLD_MAX_FORCE = 1.0e7          # N (and N·m); far above any break limit so the reading is never clamped
 CONTACT_DAMPING_STEPS = 10      # while the object touches something, damping >= this * m / dt

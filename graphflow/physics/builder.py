@@ -32,7 +32,7 @@ from dataclasses import dataclass, field
 from graphflow.usd.description import Body, Joint, Shape, StageDescription
 from graphflow.usd.errors import UnsupportedPrimWarning
 from graphflow.usd.physics_import import joint_frame_offset
-from graphflow.usd.transforms import (AXIS_VECTORS, IDENTITY_POSE, Pose, compose, invert, quat_multiply,
+from graphflow.poses import (AXIS_VECTORS, IDENTITY_POSE, Pose, compose, invert, quat_multiply,
                                       quat_from_axis_angle)
 
 CONE_SEGMENTS = 24                 # a cone collider is the convex hull of this many base points and its apex

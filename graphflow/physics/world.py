@@ -14,7 +14,7 @@ import pybullet
 from pybullet_utils.bullet_client import BulletClient
 
 from graphflow.usd.description import StageDescription
-from graphflow.usd.transforms import IDENTITY_POSE, Pose, compose, invert, quat_rotate, relative
+from graphflow.poses import IDENTITY_POSE, Pose, compose, invert, quat_rotate, relative
 from graphflow.world import Services, WorldError
 
 from .native_output import native_stdout_silenced
