@@ -106,7 +106,11 @@ def create_world(stage=None, *, time_step: float | None = None, substeps: int = 
 
 
 def __getattr__(name):
-    if name in ("PyBulletWorld", "RayHit", "Contact", "ATTRIBUTES"):
+    if name in ("RayHit", "Contact"):
+        import graphflow.world
+
+        return getattr(graphflow.world, name)
+    if name in ("PyBulletWorld", "ATTRIBUTES"):
         from . import world
 
         return getattr(world, name)

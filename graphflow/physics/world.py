@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 import shutil
 import tempfile
-from typing import NamedTuple, Sequence
+from typing import Sequence
 
 import numpy as np
 import pybullet
@@ -15,8 +15,9 @@ from pybullet_utils.bullet_client import BulletClient
 
 from graphflow.usd.description import StageDescription
 from graphflow.poses import IDENTITY_POSE, Pose, compose, invert, quat_rotate, relative
-from graphflow.world import Services, WorldError
+from graphflow.world import Contact, RayHit, Services, WorldError
 
+from .attachment import WorldAttachments
 from .native_output import native_stdout_silenced
 from .builder import ArticulationHandle, BodyHandle, BuiltScene, SceneBuilder
 
@@ -38,21 +39,6 @@ class _BoundClient(BulletClient):
         if name != "disconnect":          # BulletClient forgets its id on disconnect: keep that lookup live
             self.__dict__[name] = attribute
         return attribute
-
-
-class RayHit(NamedTuple):
-    prim_path: str                              # the rigid body (or static collider) that was hit
-    position: tuple[float, float, float]
-    normal: tuple[float, float, float]
-    distance: float
-
-
-class Contact(NamedTuple):
-    other_prim: str | None                      # None: something graphflow does not know (a gripper's helper)
-    position: tuple[float, float, float]        # on the other prim, world frame
-    normal: tuple[float, float, float]          # from the other prim towards this one
-    distance: float                             # negative when penetrating
-    normal_force: float
 
 
 # Attributes nodes may read (R) or write (W); anything else authored on the stage is read-only from USD.
@@ -107,6 +93,7 @@ class PyBulletWorld:
             raise WorldError(f"cannot open a PyBullet {'GUI' if gui else 'DIRECT'} client: {error}") from None
         self._mesh_directory = tempfile.mkdtemp(prefix="graphflow-meshes-")
         self.services = Services()
+        self.attachments = WorldAttachments(self)
         self._closed = False
         self._build()
 
@@ -141,14 +128,15 @@ class PyBulletWorld:
         self.playing = False
 
     def reset(self) -> None:
-        """Rebuild from the parsed stage (bit-exact initial state), then reset the services."""
+        """Rebuild from the parsed stage (bit-exact initial state), then reset attachments and services."""
         self._build()
+        self.attachments.reset()
         self.time = 0.0
         self.step_index = 0
         self.services.reset()
 
     def step(self) -> None:
-        """One fixed step (``substeps`` PyBullet steps), then the services. No-op while paused."""
+        """One fixed step (``substeps`` PyBullet steps), then attachments and services. No-op while paused."""
         if not self.playing:
             return
         for _ in range(self.substeps):
@@ -157,6 +145,7 @@ class PyBulletWorld:
         self._pending_forces = []
         self.step_index += 1
         self.time = self.step_index * self.time_step
+        self.attachments.update(self.time_step)
         self.services.after_step(self.time_step)
 
     def window_keys(self):
@@ -343,6 +332,11 @@ class PyBulletWorld:
         a, b = self._body(prim_a), self._body(prim_b)
         self.client.setCollisionFilterPair(a.body_id, b.body_id, a.link, b.link, 1 if enabled else 0)
 
+    def gravity_enabled(self, prim_path: str) -> bool:
+        """Whether gravity acts on the body (as authored, unless switched since; kinematic: as authored)."""
+        handle = self._body(prim_path)
+        return handle.path not in self._gravity_off if handle.kind == "dynamic" else handle.gravity_enabled
+
     def set_gravity_enabled(self, prim_path: str, enabled: bool) -> None:
         handle = self._body(prim_path)
         if enabled:
@@ -350,6 +344,23 @@ class PyBulletWorld:
         elif handle.kind == "dynamic":
             self._gravity_off.add(handle.path)
         self._gravity_plan = None
+
+    def body_handle(self, prim_path: str) -> BodyHandle | None:
+        """The built body that simulates a body or collider prim, or None."""
+        try:
+            return self._body(prim_path)
+        except WorldError:
+            return None
+
+    def body_of(self, prim_path: str) -> str | None:
+        handle = self.body_handle(prim_path)
+        return None if handle is None else handle.path
+
+    def same_body(self, path_a: str, path_b: str) -> bool:
+        if path_a == path_b:
+            return True
+        body = self.body_of(path_a)
+        return body is not None and body == self.body_of(path_b)
 
     # -- lookups ---------------------------------------------------------------------------------
     def _body(self, prim_path: str) -> BodyHandle:
