@@ -26,11 +26,9 @@ from __future__ import annotations
 
 import math
 import os
-import warnings
 from dataclasses import dataclass, field
 
 from graphflow.usd.description import Body, Joint, Shape, StageDescription
-from graphflow.usd.errors import UnsupportedPrimWarning
 from graphflow.usd.physics_import import joint_frame_offset
 from graphflow.poses import (AXIS_VECTORS, IDENTITY_POSE, Pose, compose, invert, quat_multiply,
                                       quat_from_axis_angle)
@@ -45,7 +43,7 @@ _AXIS_ALIGNMENT = {"X": quat_from_axis_angle((0.0, 1.0, 0.0), math.pi / 2.0),
                    "Z": (0.0, 0.0, 0.0, 1.0)}
 
 
-@dataclass
+@dataclass(frozen=True)
 class BodyHandle:
     """Where a USD body lives in PyBullet and how its prim frame relates to the link's inertial frame."""
 
@@ -54,33 +52,31 @@ class BodyHandle:
     link: int                       # -1 for a base
     kind: str                       # dynamic, kinematic, static
     inertial_in_prim: Pose          # the PyBullet inertial (COM) frame expressed in the prim frame
-    mass: float
+    mass: float                     # as built (the world keeps the live mass)
     gravity_enabled: bool
     articulation: str | None = None
 
 
-@dataclass
-class DriveState:
-    """The live drive of one articulation DOF (targets change at run time; SI units)."""
+@dataclass(frozen=True)
+class DriveSpec:
+    """The drive of one articulation DOF as built (SI units); its targets are run-time state of the world."""
 
     stiffness: float
     damping: float
     max_force: float
-    target_position: float
-    target_velocity: float
     acceleration: bool
     max_velocity: float | None = None     # the joint's physxJoint:maxJointVelocity, rad/s or m/s
     lower: float = float("-inf")          # the joint's limits: targets beyond them are not pursued
     upper: float = float("inf")
 
     @classmethod
-    def for_joint(cls, joint: Joint) -> "DriveState":
+    def for_joint(cls, joint: Joint) -> "DriveSpec":
         drive = joint.drive
-        return cls(drive.stiffness, drive.damping, drive.max_force, drive.target_position,
-                   drive.target_velocity, drive.acceleration, joint.max_velocity, joint.lower, joint.upper)
+        return cls(drive.stiffness, drive.damping, drive.max_force, drive.acceleration, joint.max_velocity,
+                   joint.lower, joint.upper)
 
 
-@dataclass
+@dataclass(frozen=True)
 class ArticulationHandle:
     path: str
     body_id: int
@@ -89,9 +85,12 @@ class ArticulationHandle:
     joint_indices: tuple[int, ...]        # PyBullet joint index of each DOF
     signs: tuple[float, ...]              # USD coordinate = sign * PyBullet coordinate
     angular: tuple[bool, ...]
-    drives: list[DriveState | None]
-    efforts: list[float]                  # feed-forward efforts set by nodes (N or N m)
+    drives: tuple[DriveSpec | None, ...]
     members: frozenset[str]               # root, body and joint prim paths
+
+    @property
+    def driven(self) -> bool:
+        return any(drive is not None for drive in self.drives)
 
     @property
     def joint_names(self) -> tuple[str, ...]:
@@ -100,11 +99,14 @@ class ArticulationHandle:
 
 @dataclass
 class BuiltScene:
+    """What one build made in the client (lookup tables), and the prims it could not build."""
+
     bodies: dict[str, BodyHandle] = field(default_factory=dict)
     by_id: dict[tuple[int, int], str] = field(default_factory=dict)
     articulations: dict[str, ArticulationHandle] = field(default_factory=dict)
     joint_dofs: dict[str, tuple[str, int]] = field(default_factory=dict)   # joint path -> (articulation, DOF)
     constraints: dict[str, list[int]] = field(default_factory=dict)        # joint path -> constraint ids
+    unsupported: list[tuple[str, str]] = field(default_factory=list)       # (path, reason), beyond the import's
 
 
 class SceneBuilder:
@@ -115,9 +117,10 @@ class SceneBuilder:
         self.description = description
         self.mesh_directory = mesh_directory
         self.scene = BuiltScene()
-        self._warned: set[str] = set()
+        self._noted: set[str] = set()
 
     def build(self) -> BuiltScene:
+        """Create everything in the client; the scene lists what was left out (the caller warns)."""
         articulated: set[str] = set()
         for articulation in self.description.articulations:
             if self._build_articulation(articulation):
@@ -132,12 +135,11 @@ class SceneBuilder:
         return self.scene
 
     def _unsupported(self, path: str, reason: str):
-        """Warn once per build; the description already lists import-time problems."""
-        if path not in self._warned:
-            self._warned.add(path)
+        """Note a prim the build leaves out, once (the description already lists import-time problems)."""
+        if path not in self._noted:
+            self._noted.add(path)
             if (path, reason) not in self.description.unsupported:
-                self.description.unsupported.append((path, reason))
-                warnings.warn(UnsupportedPrimWarning(f"{self.description.source}: {path}: {reason}"), stacklevel=3)
+                self.scene.unsupported.append((path, reason))
 
     # -- collision shapes ----------------------------------------------------------
     def _collision_shape(self, shapes: list[Shape], frame: Pose = IDENTITY_POSE) -> int:
@@ -354,7 +356,7 @@ class SceneBuilder:
                                         tuple(arrays["inertial_orientations"][index])))
             self._register(body, body_id, index, inertial_in_prim, articulation.path, body.mass.mass)
 
-        drives, efforts = [], []
+        drives = []
         for index, joint, sign, parent, child in dofs:
             position = joint.initial_position
             if position is None:
@@ -366,13 +368,12 @@ class SceneBuilder:
             if math.isfinite(joint.lower) or math.isfinite(joint.upper):
                 low, high = sorted((sign * joint.lower, sign * joint.upper))
                 p.changeDynamics(body_id, index, jointLowerLimit=max(low, -1e10), jointUpperLimit=min(high, 1e10))
-            drives.append(DriveState.for_joint(joint) if joint.drive else None)
-            efforts.append(0.0)
+            drives.append(DriveSpec.for_joint(joint) if joint.drive else None)
         handle = ArticulationHandle(
             path=articulation.path, body_id=body_id, fixed_base=fixed_base,
             joint_paths=tuple(j.path for _i, j, _s, _p, _c in dofs), joint_indices=tuple(i for i, *_ in dofs),
             signs=tuple(s for _i, _j, s, _p, _c in dofs), angular=tuple(j.kind == "revolute" for _i, j, *_ in dofs),
-            drives=drives, efforts=efforts,
+            drives=tuple(drives),
             members=frozenset([articulation.path, *visited - {None}, *(j.path for _c, j, _p, _b in order)]))
         self.scene.articulations[articulation.path] = handle
         for dof, path in enumerate(handle.joint_paths):
