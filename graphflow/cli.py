@@ -178,8 +178,7 @@ def command_run(args) -> int:
             after_tick.append(tracer.record_tick)
             closers.append(tracer.stream.close)
         if args.record:
-            video = _start_recording(args, simulation.world)
-            after_tick.append(video.capture)
+            video = simulation.world.services.add(_start_recording(args, simulation.world))
             closers.append(video.close)
     except BadInput:
         simulation.close()

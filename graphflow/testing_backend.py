@@ -178,10 +178,10 @@ class FakeWorld:
             raise WorldError(f"{path} is not a body of this fake world")
         return box
 
-    def body_of(self, path: str) -> str | None:
-        if path in self.boxes:
-            return path
-        carried = self.frames.get(path)
+    def body_of(self, prim_path: str) -> str | None:
+        if prim_path in self.boxes:
+            return prim_path
+        carried = self.frames.get(prim_path)
         return carried[0] if carried is not None and carried[0] in self.boxes else None
 
     def same_body(self, path_a: str, path_b: str) -> bool:
@@ -288,11 +288,11 @@ class FakeWorld:
         self._box(self.body_of(path) or path)
         self._pending_forces.append((self.body_of(path), tuple(force), position))
 
-    def gravity_enabled(self, path: str) -> bool:
-        return self._box(self.body_of(path) or path).gravity
+    def gravity_enabled(self, prim_path: str) -> bool:
+        return self._box(self.body_of(prim_path) or prim_path).gravity
 
-    def set_gravity_enabled(self, path: str, enabled: bool) -> None:
-        self._box(self.body_of(path) or path).gravity = bool(enabled)
+    def set_gravity_enabled(self, prim_path: str, enabled: bool) -> None:
+        self._box(self.body_of(prim_path) or prim_path).gravity = bool(enabled)
 
     def set_collision_between(self, prim_a: str, prim_b: str, enabled: bool) -> None:
         pair = frozenset((self.body_of(prim_a) or prim_a, self.body_of(prim_b) or prim_b))
