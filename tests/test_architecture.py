@@ -73,3 +73,9 @@ def test_only_graphflow_physics_imports_pybullet():
                        for path in folder.rglob("*.py")
                        if any(module.split(".")[0] in ("pybullet", "pybullet_utils") for module, _ in _imports(path)))
     assert importers and all(path.startswith("graphflow/physics/") for path in importers), importers
+
+
+def test_nodes_reach_physics_only_through_the_world_they_are_given():
+    importers = sorted(str(path.relative_to(ROOT)) for path in (ROOT / "nodes").rglob("*.py")
+                       if any(module.startswith("graphflow.physics") for module, _ in _imports(path)))
+    assert importers == []
