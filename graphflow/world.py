@@ -11,9 +11,9 @@ and ``ClockWorld`` below (graphs that name no stage: every physics query raises
 ``WorldError``).
 
 Tick order (documented in docs/architecture.md): ``world.step()`` advances
-physics one step and then steps the world's services (surface-gripper manager,
-keyboard, gamepad, recorder, ...) in the order they were added; after that
-every graph instance ticks once.
+physics one step, then the world's attachments (their compliance), then the
+world's services (surface-gripper manager, keyboard, gamepad, recorder, ...) in
+the order they were added; after that every graph instance ticks once.
 """
 from __future__ import annotations
 
