@@ -2,8 +2,8 @@
 
 The component knows nothing about PyBullet: it asks its world, through the
 declared interface (``graphflow.world.World``), for raycasts and body
-identities, and the world's ``attachments`` for attachment frames, holds and
-their forces (``graphflow.testing_backend.FakeWorld`` serves the tests). Attach and detach requests are queued
+identities, and the world's ``attachments`` for attachment frames and forces
+(``graphflow.testing_backend.FakeWorld`` serves the tests). Attach and detach requests are queued
 on the manager and carried out at the end of the next physics-step update, so
 a joint created during step *k*'s update is active for step *k+1* (§2.1).
 """
@@ -15,7 +15,8 @@ from enum import IntEnum
 from typing import Any, Callable, Sequence
 
 from graphflow.poses import AXIS_VECTORS, Pose, quat_rotate
-from graphflow.world import AXIS_NAMES, AxisCompliance
+from graphflow.world import AXIS_NAMES, AxisCompliance, World
+
 SETTLING_DELAY = 10          # physics steps before force checks after an attach or break (m_settlingDelay)
 SELF_HIT_STEP = 0.001        # m the ray origin advances past the gripper's own body
 SELF_HIT_MAX_STEPS = 1000    # give up after 1 m of self hits (Isaac loops without bound)
@@ -92,7 +93,7 @@ class GripEvents:
 class SurfaceGripperComponent:
     path: str
     points: list[AttachmentPoint]
-    world: Any                               # a ``graphflow.world.World``
+    world: "World"
     queue: Callable[[tuple], None]           # the manager's action queue
     properties: GripperProperties = field(default_factory=GripperProperties)
     on_status_change: Callable[["SurfaceGripperComponent"], None] | None = None

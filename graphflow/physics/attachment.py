@@ -175,9 +175,6 @@ class PyBulletAttachments:
     def is_attached(self, handle: int) -> bool:
         return handle in self._hold_of
 
-    def target_of(self, handle: int) -> tuple[int, int]:
-        return self._holds[self._hold_of[handle]].target
-
     def force_on_gripper(self, handle: int, rigid_rows_only: bool = True):
         """This point's share of the force the hold's rigid parts put on the gripper body, world axes, N.
 
