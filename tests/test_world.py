@@ -57,3 +57,66 @@ def test_a_stage_picks_the_pybullet_backend_at_the_stage_rate():
         assert world.body_of("/World/ur10/ee_link") == "/World/ur10/ee_link"
     finally:
         world.close()
+
+
+BOX, GRIPPER = "/World/Box", "/World/Gripper"
+BOXES = {BOX: ((0.0, 0.0, 0.5), 0.1), GRIPPER: ((0.0, 0.0, 1.0), 0.05)}     # centre, half size
+
+
+def _pybullet_scene():
+    pytest.importorskip("pybullet")
+    from pxr import Gf, Usd, UsdGeom, UsdPhysics
+
+    from graphflow.physics import create_world as create_pybullet_world
+
+    stage = Usd.Stage.CreateInMemory()
+    UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)
+    UsdGeom.SetStageMetersPerUnit(stage, 1.0)
+    for path, (center, half) in BOXES.items():
+        cube = UsdGeom.Cube.Define(stage, path)
+        cube.CreateSizeAttr(2 * half)
+        cube.AddTranslateOp().Set(Gf.Vec3d(*center))
+        UsdPhysics.CollisionAPI.Apply(cube.GetPrim())
+        UsdPhysics.RigidBodyAPI.Apply(cube.GetPrim()).CreateKinematicEnabledAttr(True)
+    return create_pybullet_world(stage)
+
+
+def _fake_scene():
+    world = FakeWorld()
+    for path, (center, half) in BOXES.items():
+        world.add_box(path, center, (half, half, half))
+    return world
+
+
+@pytest.fixture(params=[_fake_scene, _pybullet_scene], ids=["fake", "pybullet"])
+def two_boxes(request):
+    """The gripper box 0.4 m above the other box, on each backend."""
+    world = request.param()
+    yield world
+    getattr(world, "close", lambda: None)()
+
+
+def test_the_fake_and_pybullet_agree_on_rays_bodies_and_attachments(two_boxes):
+    world = two_boxes
+    hit = world.raycast((0.0, 0.0, 0.9), (0.0, 0.0, -2.0), 1.0)     # from under the gripper, straight down
+    assert hit.prim_path == BOX and hit.distance == pytest.approx(0.3, abs=1e-4)
+    assert hit.position == pytest.approx((0.0, 0.0, 0.6), abs=1e-4)
+    assert hit.normal == pytest.approx((0.0, 0.0, 1.0), abs=1e-6)
+    assert world.raycast((1.0, 0.0, 0.9), (0.0, 0.0, -1.0), 1.0) is None
+    assert [h is None for h in world.raycast_batch([(0, 0, 0.9), (0, 0, 0.9)], [(0, 0, -1), (0, 0, 1)], 0.05)] == [
+        True, False]                                                  # down: 0.3 m away; up: the gripper, 0.05 m
+    assert world.body_of(BOX) == BOX and world.body_of("/World/Nothing") is None
+    assert world.same_body(BOX, BOX) and not world.same_body(BOX, GRIPPER)
+    under = ((0.0, 0.0, -0.05), (0.0, 0.0, 0.0, 1.0))                  # a frame on the gripper's bottom face
+    frame = world.attachments.frame(GRIPPER, under)
+    assert frame[0] == pytest.approx((0.0, 0.0, 0.95), abs=1e-6)
+    assert world.attachments.frame("/World/Nothing", under) is None
+    assert world.attachments.attach(GRIPPER, under, "/World/Nothing") is None
+    handle = world.attachments.attach(GRIPPER, under, BOX)
+    assert world.attachments.target_of(handle) == BOX
+    world.step()
+    assert len(world.attachments.force_on_gripper(handle)) == 3
+    world.attachments.detach(handle)
+    world.attachments.detach(handle)                                  # twice is harmless
+    world.reset()
+    assert world.step_index == 0
