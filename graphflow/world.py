@@ -179,7 +179,7 @@ class World(Protocol):
 
     services: Services   # owned by the world: stepped after each physics step, reset with it
     stage: Any           # the ``Usd.Stage`` the world was built from, or None
-    attachments: Attachments
+    attachments: Attachments | None       # None: a world without bodies (``ClockWorld``)
     attachment_joints: Mapping[str, Any]   # D6 joints left to the gripper (``graphflow.usd.description.Joint``)
 
     def step(self) -> None:
