@@ -99,19 +99,6 @@ class _RealTimePacer:
             time.sleep(ahead)
 
 
-class _VideoFrames:
-    """Run listener feeding a video recorder: a frame when one is due after each tick, the file finished at the end."""
-
-    def __init__(self, video):
-        self.video = video
-
-    def on_tick(self, _simulation, _tick: int) -> None:
-        self.video.capture()
-
-    def on_end(self, _simulation, _result) -> None:
-        self.video.close()
-
-
 def _load(path: str):
     try:
         return load_document(path)
@@ -190,12 +177,12 @@ def command_run(args) -> int:
     seconds = args.seconds
     if args.ticks is None and seconds is None:
         seconds = document.settings.get("duration")
-    trace_stream = None   # the trace file and the topic recording are ours to close; per-tick jobs are listeners
+    trace_stream = video = None   # ours to close (with the topic recording); per-tick jobs are listeners or services
     try:
         if args.trace:
             trace_stream = _open_trace(args.trace, simulation, args.graph)
         if args.record:
-            simulation.add_listener(_VideoFrames(_start_recording(args, simulation.world)))
+            video = simulation.world.services.add(_start_recording(args, simulation.world))
     except BadInput:
         if topic_recording is not None:
             topic_recording.abandon()
@@ -217,6 +204,8 @@ def command_run(args) -> int:
             trace_stream.close()
         if topic_recording is not None:
             topic_recording.close()
+        if video is not None:
+            video.close()
         simulation.close()
     wall = time.perf_counter() - started
     reason = "graph finished" if result.stopped_by_graph else "limit reached"

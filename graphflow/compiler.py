@@ -18,7 +18,7 @@ from typing import Any
 
 import networkx as nx
 
-from .document import GraphDocument, GraphError, NodeDoc, Problem
+from .model import GraphDocument, GraphError, NodeDoc, Problem
 from .executor import CompiledGraph
 from .registry import Registry, default_registry
 from .spec import NodeType

@@ -25,7 +25,7 @@ from typing import Any, Callable, Iterable
 
 import networkx as nx
 
-from .document import GraphDocument
+from .model import GraphDocument
 from .registry import Registry
 from .spec import NodeSpec, NodeType
 from .types import ExecState

@@ -24,11 +24,6 @@ DAMPING = 0.02                        # damped least squares: lambda (m, rad), k
 MAX_JOINT_STEP = 0.3                  # rad per iteration: Newton steps far from the solution can overshoot
 
 
-def rotation_from_rpy(roll: float, pitch: float, yaw: float) -> "np.ndarray":
-    """URDF's fixed-axis roll-pitch-yaw: R = Rz(yaw) Ry(pitch) Rx(roll)."""
-    return _matrix(_rpy_rotation((roll, pitch, yaw)))
-
-
 def quaternion_to_matrix(quaternion: Sequence[float]) -> "np.ndarray":
     return _matrix(_quaternion_rotation(quaternion))
 

@@ -6,6 +6,7 @@ imported only when a stage is named) or is a plain ``ClockWorld``.
 from __future__ import annotations
 
 import math
+import os
 from dataclasses import dataclass
 from typing import Any, Callable, Iterable, Protocol
 
@@ -23,16 +24,27 @@ class RunResult:
     stopped_by_graph: bool
 
 
-def create_world_for(document: GraphDocument, *, gui: bool = False) -> World:
-    """The world a document asks for: its stage on PyBullet, or a clock when it names none."""
-    settings = document.settings
-    stage = settings.get("stage")
+def create_world(stage=None, *, time_step: float | None = None, substeps: int = 1, gui: bool = False,
+                 base_dir=None) -> World:
+    """The one world factory: a ``ClockWorld`` without a stage, else the stage on PyBullet.
+
+    *stage*: a path (relative to *base_dir*), ``asset:NAME`` or an open ``Usd.Stage``;
+    *time_step* None = the stage's own rate, or ``DEFAULT_TIME_STEP`` without a stage.
+    """
     if stage is None:
-        return ClockWorld(settings.get("timeStep", DEFAULT_TIME_STEP))
+        return ClockWorld(DEFAULT_TIME_STEP if time_step is None else time_step)
     from . import physics  # only here: core-only graphs never import pybullet or pxr
 
-    return physics.create_world(physics.resolve_stage(stage, document.base_dir),
-                                time_step=settings.get("timeStep"), substeps=settings.get("substeps", 1), gui=gui)
+    if isinstance(stage, (str, os.PathLike)):
+        stage = physics.resolve_stage(os.fspath(stage), base_dir)
+    return physics.create_world(stage, time_step=time_step, substeps=substeps, gui=gui)
+
+
+def create_world_for(document: GraphDocument, *, gui: bool = False) -> World:
+    """The world a document asks for (its settings' stage, time step and substeps)."""
+    settings = document.settings
+    return create_world(settings.get("stage"), time_step=settings.get("timeStep"),
+                        substeps=settings.get("substeps", 1), gui=gui, base_dir=document.base_dir)
 
 
 class Listener(Protocol):

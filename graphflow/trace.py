@@ -118,10 +118,10 @@ def sample_grippers(world) -> dict[str, GripperSample]:
 def _holding_force(manager, path: str) -> float | None:
     """Magnitude of the largest force an attachment constraint of this gripper carries (N)."""
     component = manager.component(path)
-    backend = manager.backend
+    attachments = manager.attachments
     magnitudes = []
     for handle in component.handles.values():
-        force = backend.force_on_gripper(handle)
+        force = attachments.force_on_gripper(handle)
         magnitudes.append(math.sqrt(sum(float(f) * float(f) for f in force)))
     return max(magnitudes) if magnitudes else None
 

@@ -1,18 +1,28 @@
-"""The seam between the engine and a physics backend.
+"""The seam between the engine and a physics backend: the one declared backend interface.
 
-The executor only needs a clock that advances one fixed step at a time; nodes
-need a node-facing API to read and act on prims. Both are described here
-without importing any physics engine: ``graphflow.physics`` implements
-``World`` on PyBullet, ``ClockWorld`` below serves graphs that name no stage.
+The executor only needs a clock that advances one fixed step at a time; nodes,
+the surface gripper and the input services need to read and act on prims.
+``World`` below declares all of it (and ``Attachments``, the compliant holds a
+gripper makes), with the plain data types that cross the seam (``RayHit``,
+``Contact``, ``AxisCompliance``), without importing any physics engine.
+Implementations: ``graphflow.physics.PyBulletWorld`` (PyBullet, from a USD
+stage), ``graphflow.testing_backend.FakeWorld`` (kinematic boxes, for tests)
+and ``ClockWorld`` below (graphs that name no stage: every physics query raises
+``WorldError``).
 
 Tick order (documented in docs/architecture.md): ``world.step()`` advances
-physics one step and then steps the world's services (surface-gripper manager,
-keyboard, gamepad, recorder, ...) in the order they were added; after that
-every graph instance ticks once.
+physics one step, then the world's attachments (their compliance), then the
+world's services (surface-gripper manager, keyboard, gamepad, recorder, ...) in
+the order they were added; after that every graph instance ticks once.
 """
 from __future__ import annotations
 
-from typing import Callable, Protocol, Sequence, TypeVar, runtime_checkable
+import math
+from dataclasses import dataclass
+from types import MappingProxyType
+from typing import Any, Callable, Hashable, Mapping, NamedTuple, Protocol, Sequence, TypeVar, runtime_checkable
+
+from .poses import Pose, Vec3
 
 ServiceT = TypeVar("ServiceT")
 
@@ -73,25 +83,122 @@ class WorldError(RuntimeError):
     """A node asked the world for something it cannot do (unknown prim, bad attribute, ...)."""
 
 
+# -- data that crosses the seam ---------------------------------------------------------------------
+
+class RayHit(NamedTuple):
+    prim_path: str                              # the rigid body (or static collider) that was hit
+    position: tuple[float, float, float]
+    normal: tuple[float, float, float]
+    distance: float
+
+
+class Contact(NamedTuple):
+    other_prim: str | None                      # None: something graphflow does not know (a gripper's helper)
+    position: tuple[float, float, float]        # on the other prim, world frame
+    normal: tuple[float, float, float]          # from the other prim towards this one
+    distance: float                             # negative when penetrating
+    normal_force: float
+
+
+AXIS_NAMES = ("transX", "transY", "transZ", "rotX", "rotY", "rotZ")
+
+
+@dataclass(frozen=True)
+class AxisCompliance:
+    """One D6 axis of an attachment: limits (``lower > upper`` = locked; infinite = free), drive stiffness/damping.
+
+    Translations in m (stiffness N/m), rotations in rad (stiffness N m/rad).
+    """
+
+    lower: float = float("-inf")
+    upper: float = float("inf")
+    stiffness: float = 0.0
+    damping: float = 0.0
+
+    @property
+    def locked(self) -> bool:
+        return self.lower > self.upper
+
+    @property
+    def rigid(self) -> bool:
+        unbounded = math.isinf(self.lower) and math.isinf(self.upper)
+        return self.locked or (unbounded and self.stiffness == 0.0 and self.damping == 0.0)
+
+
+RIGID = tuple(AxisCompliance(1.0, -1.0) for _ in AXIS_NAMES)     # every axis locked: a rigid hold
+
+
+# -- the interface ------------------------------------------------------------------------------------
+
+class Attachments(Protocol):
+    """A world's compliant attachments (the holds a surface gripper makes), addressed by prim path.
+
+    An attachment holds *target* at its current pose relative to a frame on the
+    gripper body (a D6 joint frame, given in the gripper prim's frame), through
+    a joint whose six axes comply as ``AxisCompliance`` says (``RIGID``: a
+    fixed joint). The gripper body and target stop colliding while held.
+    Handles are opaque. The world steps ``update(dt)`` right after each physics
+    step (before its services) and ``reset()`` drops every hold.
+    """
+
+    def frame(self, gripper_prim: str, frame: Pose) -> Pose | None:
+        """World pose of *frame* (given in *gripper_prim*'s frame); None when the prim is no rigid body."""
+
+    def attach(self, gripper_prim: str, frame: Pose, target_prim: str,
+               compliance: Sequence[AxisCompliance] = RIGID) -> Hashable | None:
+        """Hold *target_prim*; None (nothing held) when either prim is no rigid body."""
+
+    def detach(self, handle: Hashable) -> None:
+        """Let go (an unknown or already detached handle is ignored)."""
+
+    def target_of(self, handle: Hashable) -> str:
+        """The rigid-body prim a handle holds."""
+
+    def force_on_gripper(self, handle: Hashable, rigid_rows_only: bool = True) -> Vec3:
+        """Force the hold puts on the gripper body, world axes, N (Isaac's ``getForce``: force on actor0).
+
+        ``rigid_rows_only``: leave out the part carried by compliant axes inside their limits."""
+
+    def torque_on_gripper(self, handle: Hashable) -> Vec3:
+        """Torque the hold puts on the gripper about the attachment frame's origin, world axes, N m."""
+
+    def update(self, dt: float) -> None: ...
+
+    def reset(self) -> None: ...
+
+
 @runtime_checkable
 class World(Protocol):
-    """What the executor and the nodes may use. Quaternions are (x, y, z, w)."""
+    """What the executor, nodes, the surface gripper and the input services may use of a world.
+
+    Prim paths in, plain Python values out; SI units; quaternions are (x, y, z, w).
+    Anything a world cannot do raises ``WorldError`` naming the prim.
+    """
 
     time_step: float     # seconds per physics step
     time: float          # simulated seconds since the last reset
     step_index: int      # physics steps since the last reset
 
     services: Services   # owned by the world: stepped after each physics step, reset with it
+    stage: Any           # the ``Usd.Stage`` the world was built from, or None
+    attachments: Attachments | None       # None: a world without bodies (``ClockWorld``)
+    attachment_joints: Mapping[str, Any]   # D6 joints left to the gripper (``graphflow.usd.description.Joint``)
 
     def step(self) -> None:
-        """Advance physics one step, then step the services."""
+        """Advance physics one step, then the attachments, then the services."""
 
     def reset(self) -> None:
-        """Return to the initial state, bit for bit, and reset the services."""
+        """Return to the initial state, bit for bit, and reset attachments and services."""
 
-    # node-facing queries and actions (prim paths in, plain Python values out)
-    def prim_pose(self, path: str) -> tuple[tuple[float, float, float], tuple[float, float, float, float]]: ...
-    def prim_velocity(self, path: str) -> tuple[tuple[float, float, float], tuple[float, float, float]]: ...
+    def window_keys(self):
+        """The key source of the world's window (``poll(time) -> [(key, is_down)]``), or None without one."""
+
+    # poses and velocities
+    def prim_pose(self, path: str) -> Pose: ...
+    def prim_velocity(self, path: str) -> tuple[Vec3, Vec3]:
+        """(linear m/s, angular rad/s) of the prim's origin, world frame."""
+
+    # joints and drives (DOFs in tree order; rad or m)
     def joint_names(self, articulation_path: str) -> tuple[str, ...]: ...
     def joint_positions(self, articulation_path: str) -> tuple[float, ...]: ...
     def joint_velocities(self, articulation_path: str) -> tuple[float, ...]: ...
@@ -99,14 +206,29 @@ class World(Protocol):
                           positions: Sequence[float] | None = None,
                           velocities: Sequence[float] | None = None,
                           efforts: Sequence[float] | None = None) -> None: ...
+
+    # attributes (USD names and units)
     def get_attribute(self, prim_path: str, name: str): ...
     def set_attribute(self, prim_path: str, name: str, value) -> None: ...
-    def contacts(self, path: str) -> list:
-        """Contacts of the body at *path*: ``(other_prim, position, normal, distance, normal_force)`` each."""
-    def gravity(self) -> tuple[float, float, float]:
+
+    # queries
+    def raycast(self, origin: Vec3, direction: Vec3, length: float) -> RayHit | None: ...
+    def raycast_batch(self, origins: Sequence[Vec3], directions: Sequence[Vec3],
+                      length: float) -> list[RayHit | None]: ...
+    def contacts(self, path: str) -> list[Contact]: ...
+    def body_of(self, prim_path: str) -> str | None:
+        """The rigid-body prim that simulates *path* (itself, or the body of a collider), None if none."""
+    def same_body(self, path_a: str, path_b: str) -> bool:
+        """Whether two prims are simulated as one rigid body."""
+
+    # actions
+    def apply_force(self, path: str, force: Vec3, position: Vec3 | None = None) -> None:
+        """World-frame force (N) at a world point (default: the centre of mass), during the next step only."""
+    def gravity_enabled(self, prim_path: str) -> bool: ...
+    def set_gravity_enabled(self, prim_path: str, enabled: bool) -> None: ...
+    def set_collision_between(self, prim_a: str, prim_b: str, enabled: bool) -> None: ...
+    def gravity(self) -> Vec3:
         """The stage's gravity vector, m/s^2."""
-    def window_keys(self):
-        """The key source of the world's window (``poll(time) -> [(key, is_down)]``), or None without one."""
 
 
 def on_nearest_ancestor(path: str, query: Callable[[str], ServiceT]) -> tuple[str, ServiceT]:
@@ -140,6 +262,10 @@ class ClockWorld:
         self.step_index = 0
         self.services = Services()
 
+    stage = None                                    # no stage,
+    attachments = None                              # no bodies to attach,
+    attachment_joints: Mapping[str, Any] = MappingProxyType({})    # no attachment joints
+
     def step(self) -> None:
         self.step_index += 1
         self.time = self.step_index * self.time_step
@@ -157,4 +283,6 @@ class ClockWorld:
         raise WorldError("this graph names no stage, so there are no prims to read or write")
 
     prim_pose = prim_velocity = joint_names = joint_positions = joint_velocities = _no_physics
-    set_joint_targets = get_attribute = set_attribute = contacts = gravity = _no_physics
+    set_joint_targets = get_attribute = set_attribute = gravity = _no_physics
+    raycast = raycast_batch = contacts = body_of = same_body = _no_physics
+    apply_force = gravity_enabled = set_gravity_enabled = set_collision_between = _no_physics

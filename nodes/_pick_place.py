@@ -13,7 +13,7 @@ import math
 
 from graphflow.spec import Attribute
 from graphflow.types import ExecState
-from graphflow.usd.transforms import relative
+from graphflow.poses import relative
 from graphflow.world import WorldError
 
 UR10_EVENTS_DT = (0.01, 0.0035, 0.01, 1.0, 0.008, 0.005, 0.005, 1.0, 0.01, 0.08)

@@ -9,7 +9,9 @@ from __future__ import annotations
 
 import math
 
-from .runtime import AXIS_NAMES, AttachmentPoint, AxisCompliance, compliance_from_joint
+from graphflow.world import AXIS_NAMES, AxisCompliance
+
+from .runtime import AttachmentPoint, compliance_from_joint
 from .usd_schema import CLEARANCE_OFFSET, read_float, read_forward_axis
 
 

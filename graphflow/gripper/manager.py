@@ -16,6 +16,8 @@ from __future__ import annotations
 import logging
 from typing import Iterable, Sequence
 
+from graphflow.world import RIGID
+
 from . import usd_schema
 from .joints import attachment_point
 from .runtime import GripperProperties, GripperStatus, SurfaceGripperComponent
@@ -29,12 +31,16 @@ _PROPERTY_NAMES = {usd_schema.MAX_GRIP_DISTANCE, usd_schema.RETRY_INTERVAL,
 
 
 class SurfaceGripperManager:
-    """Every surface gripper of one world, and Isaac's interface to them."""
+    """Every surface gripper of one world, and Isaac's interface to them.
 
-    def __init__(self, world, backend, stage):
+    It talks to the world only through ``graphflow.world.World``: grippers are
+    read from ``world.stage``, holds made with ``world.attachments``.
+    """
+
+    def __init__(self, world):
         self.world = world
-        self.backend = backend
-        self.stage = stage
+        self.attachments = world.attachments
+        self.stage = world.stage
         self.write_to_usd = False
         self.components: dict[str, SurfaceGripperComponent] = {}
         self._actions: list[tuple] = []
@@ -42,11 +48,12 @@ class SurfaceGripperManager:
         self._rescan = False
         self._session_layer = None
         self._gravity_off: set[str] = set()
+        self._gravity_restore: dict = {}             # attachment handle -> held body whose gravity it switched off
         self._written_gripped: dict[str, list[str]] = {}
         usd_schema.register_schema()
         from pxr import Tf, Usd
 
-        self._listener = Tf.Notice.Register(Usd.Notice.ObjectsChanged, self._on_objects_changed, stage)
+        self._listener = Tf.Notice.Register(Usd.Notice.ObjectsChanged, self._on_objects_changed, self.stage)
         self._scan()
 
     # -- Isaac's interface --
@@ -134,9 +141,8 @@ class SurfaceGripperManager:
     # -- world hooks --
 
     def after_step(self, dt: float) -> None:
-        """The world service's step: compliance, then every gripper's update, then queued attach/detach."""
+        """The world service's step (after the world's attachments): every gripper's update, then queued attach/detach."""
         self._refresh()
-        self.backend.update(dt)
         for component in self.components.values():
             component.on_physics_step(dt)
         self._execute_actions()
@@ -146,7 +152,7 @@ class SurfaceGripperManager:
     def reset(self) -> None:
         """The world was reset: every attachment is gone, grippers are Open, USD writes are discarded."""
         self._actions.clear()
-        self.backend.reset()
+        self._gravity_restore.clear()
         for component in self.components.values():
             component.stop()
         self._written_gripped.clear()
@@ -179,7 +185,7 @@ class SurfaceGripperManager:
 
     def _build(self, path: str) -> SurfaceGripperComponent:
         component = SurfaceGripperComponent(
-            path=path, points=self._points(path), backend=self.backend, queue=self._actions.append,
+            path=path, points=self._points(path), world=self.world, queue=self._actions.append,
             properties=GripperProperties(), on_status_change=self._status_changed,
             on_clearance_change=self._clearance_changed)
         self._read_properties(component)
@@ -188,13 +194,13 @@ class SurfaceGripperManager:
     def _points(self, path: str):
         prim = self.stage.GetPrimAtPath(path)
         relationship = prim.GetRelationship(usd_schema.ATTACHMENT_POINTS)
-        described = getattr(self.world, "attachment_joints", None)
+        described = self.world.attachment_joints
         points = []
         for target in relationship.GetTargets() if relationship else []:
             point = attachment_point(self.stage, target.pathString, described)
             if point is None:
                 continue
-            if not self.backend.has_body(point.body0_path):
+            if self.world.body_of(point.body0_path) is None:
                 log.warning("Gripper %s has no joint at attachment point %s", path, target.pathString)
                 continue
             points.append(point)
@@ -234,16 +240,31 @@ class SurfaceGripperManager:
         for action in actions:
             component, index = action[1], action[2]
             if action[0] == "attach":
-                handle = self.backend.attach(component.points[index], action[3])
+                point = component.points[index]
+                handle = self.attachments.attach(point.body0_path, point.local_pose0, action[3],
+                                                 point.compliance or RIGID)
                 if handle is None:
                     continue
                 component.handles[index] = handle
                 if component.path in self._gravity_off:
-                    self.backend.set_gravity_compensation(handle, True)
+                    self._switch_gravity_off(handle)
             else:
                 handle = component.handles.pop(index, None)
                 if handle is not None:
-                    self.backend.detach(handle)
+                    self._detach(handle)
+
+    def _switch_gravity_off(self, handle) -> None:
+        """Gravity off for the held body while held (restored on its last detach, if it was on)."""
+        body = self.attachments.target_of(handle)
+        if body in self._gravity_restore.values() or self.world.gravity_enabled(body):
+            self.world.set_gravity_enabled(body, False)
+            self._gravity_restore[handle] = body
+
+    def _detach(self, handle) -> None:
+        self.attachments.detach(handle)
+        body = self._gravity_restore.pop(handle, None)
+        if body is not None and body not in self._gravity_restore.values():
+            self.world.set_gravity_enabled(body, True)
 
     # -- write-back to USD (session sub-layer, discarded on reset) --
 
@@ -292,9 +313,4 @@ class SurfaceGripperManager:
 
 def manager_for(world) -> SurfaceGripperManager:
     """The world's surface-gripper manager: a service of the world, created on first use."""
-    def make() -> SurfaceGripperManager:
-        from graphflow.physics.attachment import WorldAttachmentBackend
-
-        return SurfaceGripperManager(world, WorldAttachmentBackend(world), world.stage)
-
-    return world.services.require(SurfaceGripperManager, make)
+    return world.services.require(SurfaceGripperManager, lambda: SurfaceGripperManager(world))

@@ -1,8 +1,9 @@
 """One surface gripper's status machine, as Isaac Sim's SurfaceGripperComponent (reference §2.4-2.11).
 
-The component knows nothing about PyBullet: it asks a *backend* for joint
-frames, raycasts and attachments (``graphflow.physics.attachment`` provides the
-PyBullet one; tests use a small fake). Attach and detach requests are queued
+The component knows nothing about PyBullet: it asks its world, through the
+declared interface (``graphflow.world.World``), for raycasts and body
+identities, and the world's ``attachments`` for attachment frames and forces
+(``graphflow.testing_backend.FakeWorld`` serves the tests). Attach and detach requests are queued
 on the manager and carried out at the end of the next physics-step update, so
 a joint created during step *k*'s update is active for step *k+1* (§2.1).
 """
@@ -11,11 +12,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from enum import IntEnum
-from typing import Any, Callable
+from typing import Any, Callable, Sequence
 
-from graphflow.usd.transforms import AXIS_VECTORS, Pose, quat_rotate
+from graphflow.poses import AXIS_VECTORS, Pose, quat_rotate
+from graphflow.world import AXIS_NAMES, AxisCompliance, World
 
-AXIS_NAMES = ("transX", "transY", "transZ", "rotX", "rotY", "rotZ")
 SETTLING_DELAY = 10          # physics steps before force checks after an attach or break (m_settlingDelay)
 SELF_HIT_STEP = 0.001        # m the ray origin advances past the gripper's own body
 SELF_HIT_MAX_STEPS = 1000    # give up after 1 m of self hits (Isaac loops without bound)
@@ -36,28 +37,6 @@ class GripperStatus(IntEnum):
     def from_token(cls, token: str | None) -> "GripperStatus":
         """Unknown or empty tokens read as Open (``GripperStatusFromToken``)."""
         return {"Closing": cls.CLOSING, "Closed": cls.CLOSED}.get(token or "", cls.OPEN)
-
-
-@dataclass(frozen=True)
-class AxisCompliance:
-    """One D6 axis: limits (``lower > upper`` = locked; infinite = free) and drive stiffness/damping."""
-
-    lower: float = float("-inf")
-    upper: float = float("inf")
-    stiffness: float = 0.0
-    damping: float = 0.0
-
-    @property
-    def locked(self) -> bool:
-        return self.lower > self.upper
-
-    @property
-    def rigid(self) -> bool:
-        unbounded = math.isinf(self.lower) and math.isinf(self.upper)
-        return self.locked or (unbounded and self.stiffness == 0.0 and self.damping == 0.0)
-
-
-RIGID = tuple(AxisCompliance(1.0, -1.0) for _ in AXIS_NAMES)
 
 
 def compliance_from_joint(limits: dict, drives: dict) -> tuple[AxisCompliance, ...]:
@@ -83,7 +62,7 @@ class AttachmentPoint:
     local_pose0: Pose               # joint frame in body0's frame, scale applied
     forward_axis: str = "X"
     clearance_offset: float = 0.0
-    compliance: Any = None          # backend-specific description of limits and drives
+    compliance: Sequence[AxisCompliance] | None = None    # per axis transX..rotZ; None = rigid
     settle: int = 0
 
     def frame_direction(self, frame: Pose):
@@ -114,7 +93,7 @@ class GripEvents:
 class SurfaceGripperComponent:
     path: str
     points: list[AttachmentPoint]
-    backend: Any
+    world: "World"
     queue: Callable[[tuple], None]           # the manager's action queue
     properties: GripperProperties = field(default_factory=GripperProperties)
     on_status_change: Callable[["SurfaceGripperComponent"], None] | None = None
@@ -199,7 +178,7 @@ class SurfaceGripperComponent:
             if point.settle > 0:
                 point.settle -= 1
                 continue
-            frame = self.backend.attachment_frame(point)
+            frame = self.world.attachments.frame(point.body0_path, point.local_pose0)
             if frame is None:
                 continue
             target = self._cast(point, frame)
@@ -218,10 +197,11 @@ class SurfaceGripperComponent:
         for _ in range(SELF_HIT_MAX_STEPS):
             origin = tuple(frame[0][i] + direction[i] * clearance for i in range(3))
             length = self.properties.max_grip_distance - clearance
-            hit = self.backend.raycast(origin, direction, length if length > 0 else 0.001)
-            if hit is None:
+            hit = self.world.raycast(origin, direction, length if length > 0 else 0.001)
+            if hit is None or not hit.prim_path:
                 return None
-            if self.backend.same_body(hit, point.body0_path):
+            hit = hit.prim_path
+            if self.world.same_body(hit, point.body0_path):
                 clearance += SELF_HIT_STEP
                 continue
             if clearance > 0 and clearance != point.clearance_offset:
@@ -245,14 +225,15 @@ class SurfaceGripperComponent:
             handle = self.handles.get(index)
             if handle is None:
                 continue
-            force = self.backend.force_on_gripper(handle)
-            direction = point.frame_direction(self.backend.attachment_frame(point))
+            attachments = self.world.attachments
+            force = attachments.force_on_gripper(handle)
+            direction = point.frame_direction(attachments.frame(point.body0_path, point.local_pose0))
             coaxial = sum(force[i] * direction[i] for i in range(3))
             shear_squared = sum((force[i] - direction[i] * coaxial) ** 2 for i in range(3))
             if (coaxial_limit > 0 and coaxial > coaxial_limit) or (
                     shear_limit > 0 and shear_squared > shear_limit * shear_limit) or (
-                    force_limit > 0 and _norm(self.backend.force_on_gripper(handle, False)) > force_limit) or (
-                    torque_limit > 0 and _norm(self.backend.torque_on_gripper(handle)) > torque_limit):
+                    force_limit > 0 and _norm(attachments.force_on_gripper(handle, False)) > force_limit) or (
+                    torque_limit > 0 and _norm(attachments.torque_on_gripper(handle)) > torque_limit):
                 self.queue(("detach", self, index))
                 del self.active[index]
                 self.inactive.add(index)

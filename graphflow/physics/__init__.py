@@ -17,61 +17,58 @@ Public API
     ``asset:ur10_pick_place.usda`` names a packaged stage; other references are
     paths, relative to *base_dir* (the graph file's folder).
 
-``PyBulletWorld`` (``graphflow.world.World`` plus):
-    ``time_step``, ``time``, ``step_index``; ``step()`` = ``substeps`` PyBullet
-    steps then the post-step services in registration order; ``play()``,
-    ``pause()`` (``step()`` does nothing while paused), ``stop()`` (reset and
-    pause), ``reset()`` (rebuild: bit-identical initial state; then calls
-    ``service.reset()`` on every post-step service that has one).
-    ``prim_pose(path) -> ((x, y, z), (qx, qy, qz, qw))`` for bodies, colliders,
-    joints (their body0-side frame) and any Xformable prim (carried by its
-    nearest body ancestor); ``prim_velocity(path) -> (linear, angular rad/s)``;
-    ``joint_names/joint_paths/joint_positions/joint_velocities(path)`` where
-    *path* is the articulation root or any body/joint/descendant prim of it
-    (DOFs in tree order, rad or m); ``set_joint_targets(path, indices, *,
-    positions=, velocities=, efforts=)``; ``get_attribute/set_attribute(prim,
-    name)`` for the names in ``ATTRIBUTES`` (USD units: degrees for angular
-    drive targets and limits; other authored USD attributes are read-only);
-    ``raycast(origin, direction, length) -> RayHit(prim_path, position, normal,
-    distance) | None``; ``raycast_batch(origins, directions, length)``;
-    ``contacts(path) -> [Contact(other_prim, position, normal, distance,
-    normal_force)]``; ``apply_force(path, force, position=None)`` (world frame,
-    during the next step only). Unknown prims or attributes raise
-    ``graphflow.world.WorldError`` naming the prim.
+``PyBulletWorld`` implements ``graphflow.world.World`` (the declared backend interface), plus:
+    ``substeps``; ``step()`` = ``substeps`` PyBullet steps, then ``attachments.update``, then the
+    services in registration order; ``play()``, ``pause()`` (``step()`` does nothing while paused),
+    ``stop()`` (reset and pause), ``reset()`` (rebuild: bit-identical initial state; then resets the
+    attachments and the services). ``prim_pose(path)`` serves bodies, colliders, joints (their
+    body0-side frame) and any Xformable prim (carried by its nearest body ancestor);
+    ``joint_names/joint_paths/joint_positions/joint_velocities(path)`` take the articulation root or
+    any body/joint/descendant prim of it (DOFs in tree order, rad or m);
+    ``get_attribute/set_attribute(prim, name)`` serve the names in ``ATTRIBUTES`` (the table is the
+    dispatch; USD units: degrees for angular drive targets and limits; other authored USD attributes
+    are read-only); ``raycast``/``raycast_batch`` -> ``RayHit``; ``contacts(path)`` -> ``Contact``;
+    ``apply_force(path, force, position=None)`` (world frame, during the next step only);
+    ``body_of``/``same_body``; ``gravity_enabled``/``set_gravity_enabled(prim, enabled)`` (a
+    counter-force -m g each step, at the centre of mass); ``set_collision_between(prim_a, prim_b,
+    enabled)``; ``attachments`` (``graphflow.world.Attachments``: compliant holds, see
+    ``attachment.py``); ``attachment_joints`` ``{joint_path: Joint}`` for D6 joints with
+    ``physics:excludeFromArticulation`` (NOT simulated; the gripper's attachment points).
+    Unknown prims or attributes raise ``graphflow.world.WorldError`` naming the prim.
 
-Backend-internal API (for the surface gripper)
-==============================================
+Modules: ``world`` (the world, its stepping, node-facing queries), ``builder`` (description ->
+PyBullet objects, in named steps; frozen handles), ``drives`` (drive torques/motors and gravity
+switches before each substep; ``DriveTargets`` is the run-time drive state), ``attributes`` (the
+attribute table), ``lookups`` (prim path -> body, articulation, pose), ``attachment`` (holds),
+``recorder`` (video, a world service), ``keyboard`` (the window's keys), ``inspect`` (``graphflow stage``).
+
+Backend-internal API (inside ``graphflow.physics``, and its own tests; never for nodes or the gripper)
+=======================================================================================================
 
 ``world.client``                 the ``pybullet_utils.bullet_client.BulletClient`` of this world
-``world.stage``                  the ``Usd.Stage`` (None for an empty world)
+``world.description``            the parsed ``StageDescription`` (immutable; ``surface_grippers``, ``joints``...)
+``world.unsupported``            (path, reason) of every prim not simulated: the import's and the build's
+``world.scene``                  the ``BuiltScene`` of the current build (frozen ``BodyHandle``/``ArticulationHandle``)
+``world.drive_targets[path]``    ``DriveTargets(positions, velocities, efforts)`` of an articulation (SI units)
+``world.masses[path]``           live body masses (``physics:mass`` can be set)
 ``world.body_link(prim_path)``   ``(body_id, link_index)``; link -1 = base. Colliders resolve to their body.
-``world.prim_at(body_id, link)`` the rigid-body prim path, or None (e.g. a gripper's own helper body)
-``world.attachment_joints``      ``{joint_path: Joint}`` for D6 joints with ``physics:excludeFromArticulation``;
-                                 they are NOT simulated. ``Joint`` (``graphflow.usd.description``) has
-                                 ``body0``/``body1`` (prim path or None), ``pose0``/``pose1`` = (localPos, localRot
-                                 as xyzw) in metres, ``limits`` {"transX".."rotZ": AxisLimit(low, high)} (rot in
-                                 radians; low > high = locked), ``drives`` {axis: Drive(stiffness, damping,
-                                 max_force, target_position, target_velocity, acceleration)} (rot per radian),
-                                 ``enabled``, ``break_force``, ``break_torque``.
-``world.description``            the whole parsed ``StageDescription`` (``surface_grippers``: path + attachment points)
-``world.set_collision_between(prim_a, prim_b, enabled)``
-``world.set_gravity_enabled(prim_path, enabled)``  (a counter-force m*g each step, at the centre of mass)
-PyBullet constraint frames are relative to a link's inertial frame; ``world.inertial_in_prim(prim)`` gives
-that frame in the prim frame. Anything created through ``world.client`` is gone after ``reset()``
-(the client is rebuilt), so services re-create it from their ``reset()`` hook or lazily.
+``world.body_handle(prim_path)`` the ``BodyHandle`` (or None); ``world.prim_at(body_id, link)`` the body prim path
+``world.inertial_in_prim(prim)`` the link's inertial frame in the prim frame (PyBullet constraint frames are relative to it)
+Anything created through ``world.client`` is gone after ``reset()`` (the client is rebuilt), so users
+of the client re-create it from a ``reset()`` hook or lazily.
 
 Choices
 =======
 
 * Drives are a PD force computed each (sub)step and applied as joint torque
   (``TORQUE_CONTROL``), integrated implicitly so stiff drives stay stable; see
-  ``PyBulletWorld._drive_efforts``. PyBullet's default joint motors are off.
+  ``drives.drive_efforts``. PyBullet's default joint motors are off.
 * Initial joint positions: ``state:{angular,linear}:physics:position`` (PhysX
   JointStateAPI, degrees for angular) if authored, else taken from the bodies'
   authored poses. Link poses follow from the root pose by forward kinematics.
 * Authored body velocities (``physics:velocity``, ``physics:angularVelocity``) are the initial velocities.
 * Unsupported prims: one ``UnsupportedPrimWarning`` (``warnings``) per prim, also listed in
-  ``world.description.unsupported``.
+  ``world.unsupported`` (the import's alone in ``description.unsupported``).
 * Articulation self-collision follows ``physxArticulation:enabledSelfCollisions`` (default off).
 """
 from __future__ import annotations
@@ -106,7 +103,11 @@ def create_world(stage=None, *, time_step: float | None = None, substeps: int = 
 
 
 def __getattr__(name):
-    if name in ("PyBulletWorld", "RayHit", "Contact", "ATTRIBUTES"):
+    if name in ("RayHit", "Contact"):
+        import graphflow.world
+
+        return getattr(graphflow.world, name)
+    if name in ("PyBulletWorld", "ATTRIBUTES"):
         from . import world
 
         return getattr(world, name)

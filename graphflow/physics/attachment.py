@@ -1,4 +1,4 @@
-"""The surface gripper's attachment mechanism on PyBullet: raycasts, compliant holds, force readings.
+"""``graphflow.world.Attachments`` on PyBullet: compliant holds and their force readings.
 
 Isaac attaches a gripped object with the attachment point's own D6 joint, whose
 limits and drives make the hold compliant. PyBullet's fixed constraint is
@@ -51,11 +51,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, replace
+from typing import Sequence
 
 import pybullet
 
-from graphflow.gripper.runtime import RIGID, AxisCompliance
-from graphflow.usd.transforms import AXIS_VECTORS, Pose, compose, invert, quat_rotate, relative
+from graphflow.world import RIGID, AxisCompliance
+
+from graphflow.poses import AXIS_VECTORS, Pose, compose, invert, quat_rotate, relative
 
 HOLD_MAX_FORCE = 1.0e7          # N (and N·m); far above any break limit so the reading is never clamped
 CONTACT_DAMPING_STEPS = 10      # while the object touches something, damping >= this * m / dt
@@ -173,9 +175,6 @@ class PyBulletAttachments:
     def is_attached(self, handle: int) -> bool:
         return handle in self._hold_of
 
-    def target_of(self, handle: int) -> tuple[int, int]:
-        return self._holds[self._hold_of[handle]].target
-
     def force_on_gripper(self, handle: int, rigid_rows_only: bool = True):
         """This point's share of the force the hold's rigid parts put on the gripper body, world axes, N.
 
@@ -285,78 +284,64 @@ class PyBulletAttachments:
         return compose(hold.child_at_attach, invert(displacement))
 
 
-class WorldAttachmentBackend:
-    """The gripper runtime's view of a ``PyBulletWorld``: prim paths in, prim paths out."""
+class WorldAttachments:
+    """A ``PyBulletWorld``'s ``graphflow.world.Attachments``: prim paths in, one lookup to (body, link), held there.
+
+    Owned by the world: created with it, ``update`` run by ``world.step()`` right
+    after the physics step, ``reset`` by ``world.reset()`` (the client's
+    constraints are gone with the rebuild).
+    """
 
     def __init__(self, world):
         self.world = world
         self.mechanism = PyBulletAttachments(world.client)
-        self._gravity_restore: dict[int, str] = {}
-        self._joint_frames: dict[tuple, Pose] = {}     # (body0 path, joint pose in it) -> joint pose in the COM frame
+        self._targets: dict[int, str] = {}              # handle -> held body prim
+        self._frames_in_com: dict[tuple, Pose] = {}     # (gripper prim, frame in it) -> frame in the link's COM frame
 
-    def _body(self, path: str):
-        try:
-            return self.world.body_link(path)
-        except Exception:  # noqa: BLE001 - any lookup failure means "no rigid body there"
+    def _frame_in_com(self, gripper_prim: str, frame: Pose) -> Pose:
+        """The frame in the gripper link's centre-of-mass frame (constant until the world is rebuilt)."""
+        key = (gripper_prim, frame)
+        in_com = self._frames_in_com.get(key)
+        if in_com is None:
+            in_com = self._frames_in_com[key] = relative(self.world.inertial_in_prim(gripper_prim), frame)
+        return in_com
+
+    def frame(self, gripper_prim: str, frame: Pose) -> Pose | None:
+        body = self.world.body_handle(gripper_prim)
+        if body is None:
             return None
+        return self.mechanism.joint_frame(body.body_id, body.link, self._frame_in_com(gripper_prim, frame))
 
-    def has_body(self, path: str) -> bool:
-        return self._body(path) is not None
-
-    def same_body(self, path_a: str, path_b: str) -> bool:
-        """Whether two prims are simulated as one PyBullet link."""
-        return path_a == path_b or (self._body(path_a) or ()) == (self._body(path_b) or (None,))
-
-    def _joint_in_com(self, point) -> Pose:
-        """The point's joint frame in its body's centre-of-mass frame (constant until the world is rebuilt)."""
-        key = (point.body0_path, point.local_pose0)
-        frame = self._joint_frames.get(key)
-        if frame is None:
-            frame = self._joint_frames[key] = relative(self.world.inertial_in_prim(point.body0_path),
-                                                       point.local_pose0)
-        return frame
-
-    def attachment_frame(self, point) -> Pose | None:
-        body = self._body(point.body0_path)
-        return None if body is None else self.mechanism.joint_frame(body[0], body[1], self._joint_in_com(point))
-
-    def raycast(self, origin, direction, length: float) -> str | None:
-        hit = self.world.raycast(origin, direction, length)
-        return hit.prim_path or None if hit is not None else None
-
-    def attach(self, point, target_path: str):
-        gripper, target = self._body(point.body0_path), self._body(target_path)
+    def attach(self, gripper_prim: str, frame: Pose, target_prim: str,
+               compliance: Sequence[AxisCompliance] = RIGID) -> int | None:
+        gripper, target = self.world.body_handle(gripper_prim), self.world.body_handle(target_prim)
         if gripper is None or target is None:
             return None
-        return self.mechanism.attach(gripper, self._joint_in_com(point), target, point.compliance or RIGID)
+        handle = self.mechanism.attach((gripper.body_id, gripper.link), self._frame_in_com(gripper_prim, frame),
+                                       (target.body_id, target.link), compliance)
+        self._targets[handle] = target.path
+        return handle
 
-    def detach(self, handle) -> None:
+    def detach(self, handle: int) -> None:
         self.mechanism.detach(handle)
-        path = self._gravity_restore.pop(handle, None)
-        if path is not None and path not in self._gravity_restore.values():
-            self.world.set_gravity_enabled(path, True)
+        self._targets.pop(handle, None)
 
-    def force_on_gripper(self, handle, rigid_rows_only: bool = True):
+    def target_of(self, handle: int) -> str:
+        return self._targets[handle]
+
+    def force_on_gripper(self, handle: int, rigid_rows_only: bool = True):
         return self.mechanism.force_on_gripper(handle, rigid_rows_only)
 
-    def torque_on_gripper(self, handle):
+    def torque_on_gripper(self, handle: int):
         return self.mechanism.torque_on_gripper(handle)
-
-    def set_gravity_compensation(self, handle, enabled: bool) -> None:
-        """Switch gravity off for the held object (restored on detach if the stage had it on)."""
-        path = self.world.prim_at(*self.mechanism.target_of(handle))
-        body = self.world.description.bodies.get(path)
-        if enabled and body is not None and body.gravity_enabled:
-            self.world.set_gravity_enabled(path, False)
-            self._gravity_restore[handle] = path
 
     def update(self, dt: float) -> None:
         self.mechanism.update(dt)
 
     def reset(self) -> None:
         self.mechanism.clear()
-        self._gravity_restore.clear()
-        self._joint_frames.clear()
+        self._targets.clear()
+        self._frames_in_com.clear()
 
 
 def _integrate(value: float, rate: float, load: float, inertia: float, dt: float, axis: AxisCompliance):

@@ -26,13 +26,11 @@ from __future__ import annotations
 
 import math
 import os
-import warnings
 from dataclasses import dataclass, field
 
 from graphflow.usd.description import Body, Joint, Shape, StageDescription
-from graphflow.usd.errors import UnsupportedPrimWarning
 from graphflow.usd.physics_import import joint_frame_offset
-from graphflow.usd.transforms import (AXIS_VECTORS, IDENTITY_POSE, Pose, compose, invert, quat_multiply,
+from graphflow.poses import (AXIS_VECTORS, IDENTITY_POSE, Pose, compose, invert, quat_multiply,
                                       quat_from_axis_angle)
 
 CONE_SEGMENTS = 24                 # a cone collider is the convex hull of this many base points and its apex
@@ -45,7 +43,7 @@ _AXIS_ALIGNMENT = {"X": quat_from_axis_angle((0.0, 1.0, 0.0), math.pi / 2.0),
                    "Z": (0.0, 0.0, 0.0, 1.0)}
 
 
-@dataclass
+@dataclass(frozen=True)
 class BodyHandle:
     """Where a USD body lives in PyBullet and how its prim frame relates to the link's inertial frame."""
 
@@ -54,33 +52,31 @@ class BodyHandle:
     link: int                       # -1 for a base
     kind: str                       # dynamic, kinematic, static
     inertial_in_prim: Pose          # the PyBullet inertial (COM) frame expressed in the prim frame
-    mass: float
+    mass: float                     # as built (the world keeps the live mass)
     gravity_enabled: bool
     articulation: str | None = None
 
 
-@dataclass
-class DriveState:
-    """The live drive of one articulation DOF (targets change at run time; SI units)."""
+@dataclass(frozen=True)
+class DriveSpec:
+    """The drive of one articulation DOF as built (SI units); its targets are run-time state of the world."""
 
     stiffness: float
     damping: float
     max_force: float
-    target_position: float
-    target_velocity: float
     acceleration: bool
     max_velocity: float | None = None     # the joint's physxJoint:maxJointVelocity, rad/s or m/s
     lower: float = float("-inf")          # the joint's limits: targets beyond them are not pursued
     upper: float = float("inf")
 
     @classmethod
-    def for_joint(cls, joint: Joint) -> "DriveState":
+    def for_joint(cls, joint: Joint) -> "DriveSpec":
         drive = joint.drive
-        return cls(drive.stiffness, drive.damping, drive.max_force, drive.target_position,
-                   drive.target_velocity, drive.acceleration, joint.max_velocity, joint.lower, joint.upper)
+        return cls(drive.stiffness, drive.damping, drive.max_force, drive.acceleration, joint.max_velocity,
+                   joint.lower, joint.upper)
 
 
-@dataclass
+@dataclass(frozen=True)
 class ArticulationHandle:
     path: str
     body_id: int
@@ -89,9 +85,12 @@ class ArticulationHandle:
     joint_indices: tuple[int, ...]        # PyBullet joint index of each DOF
     signs: tuple[float, ...]              # USD coordinate = sign * PyBullet coordinate
     angular: tuple[bool, ...]
-    drives: list[DriveState | None]
-    efforts: list[float]                  # feed-forward efforts set by nodes (N or N m)
+    drives: tuple[DriveSpec | None, ...]
     members: frozenset[str]               # root, body and joint prim paths
+
+    @property
+    def driven(self) -> bool:
+        return any(drive is not None for drive in self.drives)
 
     @property
     def joint_names(self) -> tuple[str, ...]:
@@ -100,11 +99,14 @@ class ArticulationHandle:
 
 @dataclass
 class BuiltScene:
+    """What one build made in the client (lookup tables), and the prims it could not build."""
+
     bodies: dict[str, BodyHandle] = field(default_factory=dict)
     by_id: dict[tuple[int, int], str] = field(default_factory=dict)
     articulations: dict[str, ArticulationHandle] = field(default_factory=dict)
     joint_dofs: dict[str, tuple[str, int]] = field(default_factory=dict)   # joint path -> (articulation, DOF)
     constraints: dict[str, list[int]] = field(default_factory=dict)        # joint path -> constraint ids
+    unsupported: list[tuple[str, str]] = field(default_factory=list)       # (path, reason), beyond the import's
 
 
 class SceneBuilder:
@@ -115,9 +117,10 @@ class SceneBuilder:
         self.description = description
         self.mesh_directory = mesh_directory
         self.scene = BuiltScene()
-        self._warned: set[str] = set()
+        self._noted: set[str] = set()
 
     def build(self) -> BuiltScene:
+        """Create everything in the client; the scene lists what was left out (the caller warns)."""
         articulated: set[str] = set()
         for articulation in self.description.articulations:
             if self._build_articulation(articulation):
@@ -132,12 +135,11 @@ class SceneBuilder:
         return self.scene
 
     def _unsupported(self, path: str, reason: str):
-        """Warn once per build; the description already lists import-time problems."""
-        if path not in self._warned:
-            self._warned.add(path)
+        """Note a prim the build leaves out, once (the description already lists import-time problems)."""
+        if path not in self._noted:
+            self._noted.add(path)
             if (path, reason) not in self.description.unsupported:
-                self.description.unsupported.append((path, reason))
-                warnings.warn(UnsupportedPrimWarning(f"{self.description.source}: {path}: {reason}"), stacklevel=3)
+                self.scene.unsupported.append((path, reason))
 
     # -- collision shapes ----------------------------------------------------------
     def _collision_shape(self, shapes: list[Shape], frame: Pose = IDENTITY_POSE) -> int:
@@ -233,7 +235,32 @@ class SceneBuilder:
 
     # -- articulations -------------------------------------------------------------------
     def _build_articulation(self, articulation) -> bool:
-        p = self.p
+        """One multibody for the articulation, in named steps; False (nothing built) without dynamic bodies."""
+        joints = self._articulation_joints(articulation)
+        members = [b for b in articulation.bodies if b in self.description.bodies
+                   and self.description.bodies[b].kind == "dynamic"]
+        if not members:
+            self._unsupported(articulation.path, "an articulation without dynamic bodies")
+            return False
+        tree = self._choose_base(articulation, members, joints)
+        self._walk_tree(tree, joints)
+        links = self._link_arrays(tree)
+        body_id = self._create_multibody(articulation, tree, links)
+        self._register_links(articulation, tree, links, body_id)
+        drives = self._initialise_dofs(body_id, links.dofs)
+        handle = ArticulationHandle(
+            path=articulation.path, body_id=body_id, fixed_base=tree.fixed_base,
+            joint_paths=tuple(j.path for _i, j, _s in links.dofs), joint_indices=tuple(i for i, *_ in links.dofs),
+            signs=tuple(s for _i, _j, s in links.dofs), angular=tuple(j.kind == "revolute" for _i, j, _s in links.dofs),
+            drives=drives,
+            members=frozenset([articulation.path, *tree.visited - {None}, *(j.path for _c, j, _p, _b in tree.order)]))
+        self.scene.articulations[articulation.path] = handle
+        for dof, path in enumerate(handle.joint_paths):
+            self.scene.joint_dofs[path] = (articulation.path, dof)
+        return True
+
+    def _articulation_joints(self, articulation) -> list[Joint]:
+        """The enabled joints a multibody can have (fixed, revolute, prismatic), by path; others are noted."""
         description = self.description
         joints = [description.joints[path] for path in sorted(articulation.joints)
                   if description.joints[path].enabled and description.joints[path].kind in ("fixed", "revolute",
@@ -241,38 +268,36 @@ class SceneBuilder:
         for path in articulation.joints:
             if description.joints[path].kind not in ("fixed", "revolute", "prismatic"):
                 self._unsupported(path, f"a {description.joints[path].kind} joint inside an articulation")
-        members = [b for b in articulation.bodies if b in description.bodies
-                   and description.bodies[b].kind == "dynamic"]
-        if not members:
-            self._unsupported(articulation.path, "an articulation without dynamic bodies")
-            return False
-        world_joints = [j for j in joints if j.body0 is None or j.body1 is None]
-        root_body: str | None = None
-        fixed_base = False
-        anchor_joint: Joint | None = None
-        if world_joints:
-            anchor_joint = world_joints[0]
-            if anchor_joint.kind == "fixed":
-                root_body = anchor_joint.body1 if anchor_joint.body0 is None else anchor_joint.body0
-                fixed_base = True
-            else:
-                fixed_base = True       # a massless anchor base carries the movable joint to the world
-            for extra in world_joints[1:]:
-                self._unsupported(extra.path, "a second joint to the world in one articulation (closed loop)")
-                joints.remove(extra)
-        else:
-            root_body = _floating_root(articulation, members, joints)
+        return joints
 
-        # walk the tree from the root, depth first: (child body, joint, parent body or None, child is body1).
-        # PyBullet numbers the links of createMultiBody depth first (pre-order, children in array order),
-        # whatever the order of the arrays, so the arrays are written in that order and link i is entry i.
-        order: list[tuple[str, Joint, str | None, bool]] = []
-        visited = {root_body} if root_body else set()
+    def _choose_base(self, articulation, members: list[str], joints: list[Joint]) -> "_Tree":
+        """The base: the body fixed to the world, a massless anchor for a movable joint to the world, or
+        (free in space) a floating root. Extra joints to the world close loops: noted and dropped from *joints*."""
+        world_joints = [j for j in joints if j.body0 is None or j.body1 is None]
+        if not world_joints:
+            return _Tree(_floating_root(articulation, members, joints), False, None)
+        anchor_joint = world_joints[0]
+        root_body = None
+        if anchor_joint.kind == "fixed":
+            root_body = anchor_joint.body1 if anchor_joint.body0 is None else anchor_joint.body0
+        for extra in world_joints[1:]:
+            self._unsupported(extra.path, "a second joint to the world in one articulation (closed loop)")
+            joints.remove(extra)
+        return _Tree(root_body, True, anchor_joint)
+
+    def _walk_tree(self, tree: "_Tree", joints: list[Joint]) -> None:
+        """Fill ``tree.order``: (child body, joint, parent body or None, child is body1), depth first from the base.
+
+        PyBullet numbers the links of createMultiBody depth first (pre-order, children in array order),
+        whatever the order of the arrays, so the arrays are written in that order and link i is entry i.
+        """
+        root_body, anchor_joint = tree.root_body, tree.anchor_joint
+        tree.visited = {root_body} if root_body else set()
         start: str | None = root_body
         if anchor_joint is not None and root_body is None:
             child = anchor_joint.body1 if anchor_joint.body0 is None else anchor_joint.body0
-            order.append((child, anchor_joint, None, anchor_joint.body1 == child))
-            visited.add(child)
+            tree.order.append((child, anchor_joint, None, anchor_joint.body1 == child))
+            tree.visited.add(child)
             start = child
         remaining = [j for j in joints if j is not anchor_joint]
         stack: list[str] = [start] if start is not None else []
@@ -284,78 +309,90 @@ class SceneBuilder:
                 continue
             remaining.remove(joint)
             child = joint.body1 if joint.body0 == parent else joint.body0
-            if child in visited or child is None:
+            if child in tree.visited or child is None:
                 self._unsupported(joint.path, "a joint closing a loop in an articulation")
                 continue
-            visited.add(child)
-            order.append((child, joint, parent, joint.body1 == child))
+            tree.visited.add(child)
+            tree.order.append((child, joint, parent, joint.body1 == child))
             stack.append(child)
         for joint in remaining:
             self._unsupported(joint.path, "a joint not connected to its articulation's root")
 
-        # frames: prim frame of each body expressed in its PyBullet link frame
-        link_from_prim: dict[str | None, Pose] = {root_body: IDENTITY_POSE}
-        link_index: dict[str | None, int] = {root_body: -1}
-        base_pose = description.bodies[root_body].pose if root_body else IDENTITY_POSE
-        arrays = {key: [] for key in ("masses", "shapes", "visuals", "positions", "orientations", "inertial_positions",
-                                      "inertial_orientations", "parents", "types", "axes")}
-        dofs = []
-        for index, (child, joint, parent, child_is_body1) in enumerate(order):
+    def _link_arrays(self, tree: "_Tree") -> "_Links":
+        """createMultiBody's link arrays; each link frame is its joint frame (prim frames expressed in it)."""
+        p = self.p
+        description = self.description
+        links = _Links(link_from_prim={tree.root_body: IDENTITY_POSE}, link_index={tree.root_body: -1})
+        arrays = links.arrays
+        for index, (child, joint, parent, child_is_body1) in enumerate(tree.order):
             child_side, parent_side = (joint.pose1, joint.pose0) if child_is_body1 else (joint.pose0, joint.pose1)
-            link_from_prim[child] = invert(child_side)
-            link_index[child] = index
-            origin = compose(link_from_prim[parent], parent_side) if parent is not None else parent_side
+            links.link_from_prim[child] = invert(child_side)
+            links.link_index[child] = index
+            origin = compose(links.link_from_prim[parent], parent_side) if parent is not None else parent_side
             body = description.bodies[child]
-            inertial = compose(link_from_prim[child], (body.mass.center_of_mass, body.mass.principal_axes))
+            inertial = compose(links.link_from_prim[child], (body.mass.center_of_mass, body.mass.principal_axes))
             arrays["masses"].append(body.mass.mass)
-            arrays["shapes"].append(self._collision_shape(body.shapes, link_from_prim[child]))
+            arrays["shapes"].append(self._collision_shape(body.shapes, links.link_from_prim[child]))
             arrays["visuals"].append(-1)
             arrays["positions"].append(list(origin[0]))
             arrays["orientations"].append(list(origin[1]))
             arrays["inertial_positions"].append(list(inertial[0]))
             arrays["inertial_orientations"].append(list(inertial[1]))
-            arrays["parents"].append(link_index[parent] + 1 if parent is not None else 0)
+            arrays["parents"].append(links.link_index[parent] + 1 if parent is not None else 0)
             arrays["types"].append({"fixed": p.JOINT_FIXED, "revolute": p.JOINT_REVOLUTE,
                                     "prismatic": p.JOINT_PRISMATIC}[joint.kind])
             arrays["axes"].append(list(AXIS_VECTORS[joint.axis]))
             if joint.kind != "fixed":
-                dofs.append((index, joint, 1.0 if child_is_body1 else -1.0, parent, child))
+                links.dofs.append((index, joint, 1.0 if child_is_body1 else -1.0))
+        return links
 
-        if root_body is not None:
-            root = description.bodies[root_body]
-            base_mass = 0.0 if fixed_base else root.mass.mass
-            base_inertial = (root.mass.center_of_mass, root.mass.principal_axes)
+    def _create_multibody(self, articulation, tree: "_Tree", links: "_Links") -> int:
+        """The multibody: base (the root body, or a massless anchor) and the link arrays."""
+        p = self.p
+        base_pose = self.description.bodies[tree.root_body].pose if tree.root_body else IDENTITY_POSE
+        if tree.root_body is not None:
+            root = self.description.bodies[tree.root_body]
+            links.base_mass = 0.0 if tree.fixed_base else root.mass.mass
+            links.base_inertial = (root.mass.center_of_mass, root.mass.principal_axes)
             base_shape = self._collision_shape(root.shapes)
         else:
-            base_mass, base_inertial, base_shape = 0.0, IDENTITY_POSE, -1
+            base_shape = -1
         flags = p.URDF_USE_SELF_COLLISION | p.URDF_USE_SELF_COLLISION_EXCLUDE_PARENT if articulation.self_collision else 0
-        body_id = p.createMultiBody(
-            baseMass=base_mass, baseCollisionShapeIndex=base_shape, basePosition=base_pose[0],
-            baseOrientation=base_pose[1], baseInertialFramePosition=base_inertial[0],
-            baseInertialFrameOrientation=base_inertial[1],
+        arrays = links.arrays
+        return p.createMultiBody(
+            baseMass=links.base_mass, baseCollisionShapeIndex=base_shape, basePosition=base_pose[0],
+            baseOrientation=base_pose[1], baseInertialFramePosition=links.base_inertial[0],
+            baseInertialFrameOrientation=links.base_inertial[1],
             linkMasses=arrays["masses"], linkCollisionShapeIndices=arrays["shapes"],
             linkVisualShapeIndices=arrays["visuals"], linkPositions=arrays["positions"],
             linkOrientations=arrays["orientations"], linkInertialFramePositions=arrays["inertial_positions"],
             linkInertialFrameOrientations=arrays["inertial_orientations"], linkParentIndices=arrays["parents"],
             linkJointTypes=arrays["types"], linkJointAxis=arrays["axes"], flags=flags)
 
-        if root_body is not None:
-            root = description.bodies[root_body]
+    def _register_links(self, articulation, tree: "_Tree", links: "_Links", body_id: int) -> None:
+        """Materials, authored root velocity and a ``BodyHandle`` for the root and every link body."""
+        if tree.root_body is not None:
+            root = self.description.bodies[tree.root_body]
             self._apply_dynamics(body_id, -1, root)
-            self._register(root, body_id, -1, base_inertial, articulation.path, base_mass)
-            if not fixed_base:
-                p.resetBaseVelocity(body_id, root.linear_velocity, root.angular_velocity)
-        for child, _joint, _parent, _is_body1 in order:
-            body = description.bodies[child]
-            index = link_index[child]
+            self._register(root, body_id, -1, links.base_inertial, articulation.path, links.base_mass)
+            if not tree.fixed_base:
+                self.p.resetBaseVelocity(body_id, root.linear_velocity, root.angular_velocity)
+        arrays = links.arrays
+        for child, _joint, _parent, _is_body1 in tree.order:
+            body = self.description.bodies[child]
+            index = links.link_index[child]
             self._apply_dynamics(body_id, index, body)
-            inertial_in_prim = compose(invert(link_from_prim[child]),
+            inertial_in_prim = compose(invert(links.link_from_prim[child]),
                                        (tuple(arrays["inertial_positions"][index]),
                                         tuple(arrays["inertial_orientations"][index])))
             self._register(body, body_id, index, inertial_in_prim, articulation.path, body.mass.mass)
 
-        drives, efforts = [], []
-        for index, joint, sign, parent, child in dofs:
+    def _initialise_dofs(self, body_id: int, dofs: list) -> tuple["DriveSpec | None", ...]:
+        """Initial joint positions and velocities, motors off, limits; the drive of each DOF."""
+        p = self.p
+        description = self.description
+        drives = []
+        for index, joint, sign in dofs:
             position = joint.initial_position
             if position is None:
                 pose0 = description.bodies[joint.body0].pose if joint.body0 else IDENTITY_POSE
@@ -366,18 +403,8 @@ class SceneBuilder:
             if math.isfinite(joint.lower) or math.isfinite(joint.upper):
                 low, high = sorted((sign * joint.lower, sign * joint.upper))
                 p.changeDynamics(body_id, index, jointLowerLimit=max(low, -1e10), jointUpperLimit=min(high, 1e10))
-            drives.append(DriveState.for_joint(joint) if joint.drive else None)
-            efforts.append(0.0)
-        handle = ArticulationHandle(
-            path=articulation.path, body_id=body_id, fixed_base=fixed_base,
-            joint_paths=tuple(j.path for _i, j, _s, _p, _c in dofs), joint_indices=tuple(i for i, *_ in dofs),
-            signs=tuple(s for _i, _j, s, _p, _c in dofs), angular=tuple(j.kind == "revolute" for _i, j, *_ in dofs),
-            drives=drives, efforts=efforts,
-            members=frozenset([articulation.path, *visited - {None}, *(j.path for _c, j, _p, _b in order)]))
-        self.scene.articulations[articulation.path] = handle
-        for dof, path in enumerate(handle.joint_paths):
-            self.scene.joint_dofs[path] = (articulation.path, dof)
-        return True
+            drives.append(DriveSpec.for_joint(joint) if joint.drive else None)
+        return tuple(drives)
 
     # -- joints between free bodies -------------------------------------------------------
     def _constraint_side(self, body_path: str | None, frame: Pose):
@@ -425,6 +452,31 @@ class SceneBuilder:
         if not joint.collision_enabled and child_id != -1:
             p.setCollisionFilterPair(parent_id, child_id, parent_link, child_link, 0)
         self.scene.constraints[joint.path] = ids
+
+
+@dataclass
+class _Tree:
+    """An articulation's base and its joints in link order, while it is being built."""
+
+    root_body: str | None                 # None: a massless anchor base
+    fixed_base: bool
+    anchor_joint: Joint | None            # the joint to the world, if any
+    order: list[tuple[str, Joint, str | None, bool]] = field(default_factory=list)
+    visited: set = field(default_factory=set)
+
+
+@dataclass
+class _Links:
+    """createMultiBody's arrays and the frames and DOFs that go with them, while being built."""
+
+    link_from_prim: dict                  # body path -> its prim frame in its link frame
+    link_index: dict                      # body path -> link index (-1: base)
+    arrays: dict = field(default_factory=lambda: {key: [] for key in (
+        "masses", "shapes", "visuals", "positions", "orientations", "inertial_positions", "inertial_orientations",
+        "parents", "types", "axes")})
+    dofs: list = field(default_factory=list)          # (link index, joint, sign) of each movable joint
+    base_mass: float = 0.0
+    base_inertial: Pose = IDENTITY_POSE
 
 
 def _floating_root(articulation, members: list[str], joints: list[Joint]) -> str:

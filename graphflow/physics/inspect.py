@@ -65,9 +65,10 @@ def simulate_report(stage_path: str, seconds: float) -> dict:
         drive_errors = {}
         for articulation in world.scene.articulations.values():
             positions = world.joint_positions(articulation.path)
+            targets = world.drive_targets[articulation.path].positions
             for dof, drive in enumerate(articulation.drives):
                 if drive is not None:
-                    drive_errors[articulation.joint_paths[dof]] = abs(positions[dof] - drive.target_position)
+                    drive_errors[articulation.joint_paths[dof]] = abs(positions[dof] - targets[dof])
     worst = max(free, key=moved.get) if free else None
     return {
         "seconds": steps * world.time_step,

@@ -174,8 +174,10 @@ def _display_colour(prim):
 class VideoRecorder:
     """Captures the world every k-th tick and writes the video when closed.
 
-    Create it before the run (it captures the initial state as the first
-    frame), call ``capture()`` after every tick, and ``close()`` at the end.
+    A world service: create it before the run (it captures the initial state as
+    the first frame), add it with ``world.services.add(recorder)`` so every
+    physics step captures (``after_step``), and ``close()`` it at the end. After
+    a world reset the restored initial state is the next frame.
     """
 
     def __init__(self, world, path: str | Path, *, fps: float = 30.0, size: tuple[int, int] = (480, 360),
@@ -202,6 +204,12 @@ class VideoRecorder:
         """Take a frame if this tick is on the frame grid."""
         if self.world.step_index % self.ticks_per_frame == 0:
             self._write(render_frame(self.world.client, self.size, self.camera, self.colours))
+
+    def after_step(self, _dt: float) -> None:
+        self.capture()
+
+    def reset(self) -> None:
+        self.capture()
 
     def _write(self, frame: np.ndarray) -> None:
         from PIL import Image

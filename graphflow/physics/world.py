@@ -1,27 +1,37 @@
 """``PyBulletWorld``: graphflow's ``World`` on one PyBullet client, built from a USD stage.
 
-See ``graphflow.physics`` for the public API; this module holds the one class.
+See ``graphflow.physics`` for the public API. This module holds the world, its
+stepping and its node-facing queries; the rest is in cohesive neighbours:
+``builder`` (stage description -> PyBullet objects), ``drives`` (drive torques
+and gravity switches before each step), ``attributes`` (the attribute table
+that dispatches ``get_attribute``/``set_attribute``), ``lookups`` (prim path ->
+body, articulation, pose) and ``attachment`` (the gripper's holds).
 """
 from __future__ import annotations
 
 import math
 import shutil
 import tempfile
-from typing import NamedTuple, Sequence
+import warnings
+from typing import Sequence
 
-import numpy as np
 import pybullet
 from pybullet_utils.bullet_client import BulletClient
 
 from graphflow.usd.description import StageDescription
-from graphflow.usd.transforms import IDENTITY_POSE, Pose, compose, invert, quat_rotate, relative
-from graphflow.world import DEFAULT_TIME_STEP, Services, WorldError
+from graphflow.usd.errors import UnsupportedPrimWarning
+from graphflow.poses import compose
+from graphflow.world import DEFAULT_TIME_STEP, Contact, RayHit, Services, WorldError
 
+from . import attributes
+from .attachment import WorldAttachments
+from .builder import BuiltScene, SceneBuilder
+from .drives import DriveTargets, GravitySwitches, apply_drives
+from .lookups import SceneLookups
 from .native_output import native_stdout_silenced
-from .builder import ArticulationHandle, BodyHandle, BuiltScene, SceneBuilder
 
 SOLVER_ITERATIONS = 50              # PyBullet's default, stated so it stays fixed
-MOTOR_MAX_FORCE = 1.0e9             # N or N m: a floating-base drive without a force limit
+ATTRIBUTES = attributes.ATTRIBUTES
 
 
 class _BoundClient(BulletClient):
@@ -39,42 +49,7 @@ class _BoundClient(BulletClient):
         return attribute
 
 
-class RayHit(NamedTuple):
-    prim_path: str                              # the rigid body (or static collider) that was hit
-    position: tuple[float, float, float]
-    normal: tuple[float, float, float]
-    distance: float
-
-
-class Contact(NamedTuple):
-    other_prim: str | None                      # None: something graphflow does not know (a gripper's helper)
-    position: tuple[float, float, float]        # on the other prim, world frame
-    normal: tuple[float, float, float]          # from the other prim towards this one
-    distance: float                             # negative when penetrating
-    normal_force: float
-
-
-# Attributes nodes may read (R) or write (W); anything else authored on the stage is read-only from USD.
-ATTRIBUTES = {
-    "drive:linear:physics:targetPosition": "RW prismatic joint drive target, m",
-    "drive:angular:physics:targetPosition": "RW revolute joint drive target, degrees (as USD)",
-    "drive:linear:physics:targetVelocity": "RW prismatic joint drive target velocity, m/s",
-    "drive:angular:physics:targetVelocity": "RW revolute joint drive target velocity, degrees/s",
-    "state:linear:physics:position": "R  prismatic joint position, m",
-    "state:angular:physics:position": "R  revolute joint position, degrees",
-    "state:linear:physics:velocity": "R  prismatic joint velocity, m/s",
-    "state:angular:physics:velocity": "R  revolute joint velocity, degrees/s",
-    "physics:lowerLimit": "R  joint lower limit (m or degrees, as USD)",
-    "physics:upperLimit": "R  joint upper limit (m or degrees, as USD)",
-    "xformOp:translate": "RW body position in its parent prim's frame, m (writing teleports the body)",
-    "xformOp:orient": "RW body orientation in its parent prim's frame, quaternion (x, y, z, w)",
-    "physics:mass": "RW body mass, kg",
-    "physics:velocity": "RW body linear velocity in its parent prim's frame, m/s",
-    "physics:angularVelocity": "RW body angular velocity in its parent prim's frame, degrees/s (as USD)",
-}
-
-
-class PyBulletWorld:
+class PyBulletWorld(SceneLookups):
     """A physics world stepped at a fixed rate; implements ``graphflow.world.World``.
 
     One PyBullet client per world, so several worlds in one process never
@@ -107,22 +82,32 @@ class PyBulletWorld:
             raise WorldError(f"cannot open a PyBullet {'GUI' if gui else 'DIRECT'} client: {error}") from None
         self._mesh_directory = tempfile.mkdtemp(prefix="graphflow-meshes-")
         self.services = Services()
+        self.attachments = WorldAttachments(self)
+        self.unsupported: list[tuple[str, str]] = list(description.unsupported)
         self._closed = False
         self._build()
 
     # -- construction and timeline ------------------------------------------------------------
     def _build(self):
+        """(Re)create everything in the client from the parsed stage, and fresh run-time state."""
         client = self.client
         client.resetSimulation()
         client.setPhysicsEngineParameter(fixedTimeStep=self.time_step / self.substeps, numSubSteps=0,
                                          numSolverIterations=self.solver_iterations, deterministicOverlappingPairs=1)
         client.setGravity(*self.description.gravity)
         self.scene: BuiltScene = SceneBuilder(client, self.description, self._mesh_directory).build()
-        self._gravity_off = {path for path, handle in self.scene.bodies.items()
-                             if not handle.gravity_enabled and handle.kind == "dynamic"}
-        self._gravity_plan: list[tuple] | None = None      # from _gravity_off and masses, rebuilt when they change
+        for path, reason in self.scene.unsupported:
+            if (path, reason) not in self.unsupported:
+                self.unsupported.append((path, reason))
+                warnings.warn(UnsupportedPrimWarning(f"{self.description.source}: {path}: {reason}"), stacklevel=4)
+        self.masses = {path: handle.mass for path, handle in self.scene.bodies.items()}
+        self.gravity_switches = GravitySwitches(self.scene.bodies, self.masses, self.description.gravity)
+        self.drive_targets = {path: DriveTargets.authored(articulation, self.description)
+                              for path, articulation in self.scene.articulations.items()}
+        self._driven = [(articulation, self.drive_targets[path])
+                        for path, articulation in self.scene.articulations.items()]
         self._pending_forces: list[tuple[int, int, tuple, tuple | None]] = []
-        self._offsets: dict[str, tuple[str | None, Pose]] = {}
+        self._offsets: dict = {}
 
     @property
     def attachment_joints(self):
@@ -141,14 +126,15 @@ class PyBulletWorld:
         self.playing = False
 
     def reset(self) -> None:
-        """Rebuild from the parsed stage (bit-exact initial state), then reset the services."""
+        """Rebuild from the parsed stage (bit-exact initial state), then reset attachments and services."""
         self._build()
+        self.attachments.reset()
         self.time = 0.0
         self.step_index = 0
         self.services.reset()
 
     def step(self) -> None:
-        """One fixed step (``substeps`` PyBullet steps), then the services. No-op while paused."""
+        """One fixed step (``substeps`` PyBullet steps), then attachments and services. No-op while paused."""
         if not self.playing:
             return
         for _ in range(self.substeps):
@@ -157,6 +143,7 @@ class PyBulletWorld:
         self._pending_forces = []
         self.step_index += 1
         self.time = self.step_index * self.time_step
+        self.attachments.update(self.time_step)
         self.services.after_step(self.time_step)
 
     def window_keys(self):
@@ -183,237 +170,11 @@ class PyBulletWorld:
     # -- per-step forces: drives, gravity switches, queued forces -----------------------------------
     def _apply_pre_step_forces(self, dt: float):
         client = self.client
-        for articulation in self.scene.articulations.values():
-            if not articulation.fixed_base:
-                self._drive_floating(articulation, dt)
-            elif any(d is not None for d in articulation.drives) or any(articulation.efforts):
-                client.setJointMotorControlArray(articulation.body_id, articulation.joint_indices,
-                                                 pybullet.TORQUE_CONTROL,
-                                                 forces=self._drive_efforts(articulation, dt))
-        self._cancel_gravity()
+        for articulation, targets in self._driven:
+            apply_drives(client, articulation, targets, dt)
+        self.gravity_switches.apply(client)
         for body_id, link, force, position in self._pending_forces:
             client.applyExternalForce(body_id, link, force, position, pybullet.WORLD_FRAME)
-
-    def _cancel_gravity(self):
-        """Apply -m g at the centre of mass of every dynamic body whose gravity is switched off."""
-        if self._gravity_plan is None:
-            self._gravity_plan = self._plan_gravity_cancelling()
-        client = self.client
-        for body_id, base_weight, links, link_weights in self._gravity_plan:
-            if base_weight is not None:
-                client.applyExternalForce(body_id, -1, base_weight, client.getBasePositionAndOrientation(body_id)[0],
-                                          pybullet.WORLD_FRAME)
-            if links:   # one forward-kinematics call for all the body's links, not one per link
-                states = client.getLinkStates(body_id, links, computeForwardKinematics=1)
-                for link, weight, state in zip(links, link_weights, states):
-                    client.applyExternalForce(body_id, link, weight, state[0], pybullet.WORLD_FRAME)
-
-    def _plan_gravity_cancelling(self) -> list[tuple]:
-        """Per PyBullet body: (id, its base's weight or None, links, their weights) of the bodies in _gravity_off."""
-        gravity = self.description.gravity
-        plan: dict[int, list] = {}
-        for path in sorted(self._gravity_off):
-            handle = self.scene.bodies[path]
-            entry = plan.setdefault(handle.body_id, [handle.body_id, None, [], []])
-            weight = [-handle.mass * g for g in gravity]
-            if handle.link == -1:
-                entry[1] = weight
-            else:
-                entry[2].append(handle.link)
-                entry[3].append(weight)
-        return [tuple(entry) for entry in plan.values()]
-
-    def _drive_efforts(self, articulation: ArticulationHandle, dt: float) -> list[float]:
-        """Joint efforts of the drives: a PD law integrated implicitly (backward Euler).
-
-        A force drive's effort is f = k (q* - q - dt v') + d (v* - v'), with v' the
-        velocity at the end of the step. With M the joint-space inertia matrix and
-        D = diag(dt d + dt^2 k) this gives (M + D) a = r, r = k (q* - q - dt v) +
-        d (v* - v), and f = M a: stable for any gain at 60 Hz, where an explicit
-        spring (or one using only M's diagonal) blows up on a stiff, coupled arm.
-        Acceleration drives (PhysX semantics: gains per unit of inertia) use the
-        joint's own inertia M_ii: f = M_ii r / (1 + dt d + dt^2 k). Feed-forward
-        efforts are added, then each result is clamped to the drive's max force.
-        Targets beyond the joint's limits are pursued only up to the limit, so a
-        stiff drive does not push the joint through PyBullet's (soft) limit.
-        A joint's max velocity limits the position error the spring sees to
-        v_max (d + dt k) / k, where the drive's pull and damping balance at v_max (PyBullet's
-        own velocity clamp fights an implicit drive, so it is not used).
-        """
-        states = self.client.getJointStates(articulation.body_id, articulation.joint_indices)
-        signs = articulation.signs
-        count = len(states)
-        inertia = self._joint_inertia(articulation, [s[0] for s in states])
-        efforts = list(articulation.efforts)
-        residual = [0.0] * count
-        implicit = [0.0] * count
-        force_driven = []
-        for dof, drive in enumerate(articulation.drives):
-            if drive is None:
-                continue
-            k, d = drive.stiffness, drive.damping
-            sign, state = signs[dof], states[dof]
-            position, velocity = sign * state[0], sign * state[1]
-            error = min(max(drive.target_position, drive.lower), drive.upper) - position
-            if drive.max_velocity is not None and k > 0 and d > 0:
-                limit = drive.max_velocity * (d + dt * k) / k
-                error = max(-limit, min(limit, error))
-            r = k * (error - dt * velocity) + d * (drive.target_velocity - velocity)
-            if drive.acceleration:
-                efforts[dof] += float(inertia[dof, dof]) * r / (1.0 + dt * d + dt * dt * k)
-            else:
-                residual[dof] = r
-                implicit[dof] = dt * d + dt * dt * k
-                force_driven.append(dof)
-        if force_driven:
-            if -1.0 in signs:   # signs flip rows and columns of M alike, so M in USD coordinates is S M S
-                inertia = inertia * np.outer(signs, signs)
-            matrix = inertia + np.diag(implicit)
-            acceleration = np.linalg.solve(matrix, residual).tolist()
-            for dof in force_driven:
-                efforts[dof] += residual[dof] - implicit[dof] * acceleration[dof]
-        result = []
-        for dof, drive in enumerate(articulation.drives):
-            effort = efforts[dof]
-            if drive is not None:
-                effort = max(-drive.max_force, min(drive.max_force, effort))
-            result.append(signs[dof] * effort)
-        return result
-
-    def _drive_floating(self, articulation: ArticulationHandle, dt: float):
-        """Drives of a floating-base articulation: PyBullet joint motors, solved with the contacts.
-
-        A legged robot stands on its drives: the load on a leg is the ground's reaction, which
-        only the constraint solver knows, in the same step. The torque drive of
-        ``_drive_efforts`` cannot include it: it holds a static load L with k M / (M + D)
-        instead of k, and for light legs under stiff gains (the krabby: M ~ 0.1 kg m^2,
-        D ~ 6e4) the legs folded by 0.35 rad. Here each drive is PhysX's implicit drive
-        f = k (q* - q - dt v') + d (v* - v') taken in its stiff limit: a velocity motor with
-        target v' = (k (q* - q) + d v*) / (dt k + d) (the velocity at which f = 0; max velocity
-        clamps it) and the drive's max force, solved with the contacts. Both drive types have
-        this target. It is exact as long as the drive is stiff for the link (dt (dt k + d) >> M,
-        i.e. D >> M); a soft drive is then rigid against loads, where PhysX would give way by L / k.
-        Feed-forward efforts are added as joint torques.
-        """
-        client = self.client
-        signs = articulation.signs
-        states = client.getJointStates(articulation.body_id, articulation.joint_indices)
-        indices, velocities, forces = [], [], []
-        for dof, drive in enumerate(articulation.drives):
-            if drive is None:
-                continue
-            k, d = drive.stiffness, drive.damping
-            if not dt * k + d > 0.0:
-                continue
-            error = min(max(drive.target_position, drive.lower), drive.upper) - signs[dof] * states[dof][0]
-            velocity = (k * error + d * drive.target_velocity) / (dt * k + d)
-            if drive.max_velocity is not None:
-                velocity = max(-drive.max_velocity, min(drive.max_velocity, velocity))
-            indices.append(articulation.joint_indices[dof])
-            velocities.append(signs[dof] * velocity)
-            forces.append(min(drive.max_force, MOTOR_MAX_FORCE))
-        if indices:
-            client.setJointMotorControlArray(articulation.body_id, indices, pybullet.VELOCITY_CONTROL,
-                                             targetVelocities=velocities, forces=forces)
-        if any(articulation.efforts):
-            client.setJointMotorControlArray(articulation.body_id, articulation.joint_indices,
-                                             pybullet.TORQUE_CONTROL,
-                                             forces=[sign * effort for sign, effort in zip(signs, articulation.efforts)])
-
-    def _joint_inertia(self, articulation: ArticulationHandle, positions: list[float]) -> np.ndarray:
-        """The joint-space inertia matrix of the articulation's DOFs (PyBullet coordinates)."""
-        matrix = np.array(self.client.calculateMassMatrix(articulation.body_id, positions))
-        offset = 0 if articulation.fixed_base else 6
-        return matrix[offset:offset + len(positions), offset:offset + len(positions)]
-
-    # -- backend-internal API (gripper engineer) ------------------------------------------------
-    def body_link(self, prim_path: str) -> tuple[int, int]:
-        """(PyBullet body id, link index) of a body prim or of a collider under it."""
-        handle = self._body(prim_path)
-        return handle.body_id, handle.link
-
-    def inertial_in_prim(self, prim_path: str) -> Pose:
-        """The link's inertial (centre-of-mass) frame in the prim frame: PyBullet constraint frames are relative to it."""
-        return self._body(prim_path).inertial_in_prim
-
-    def prim_at(self, body_id: int, link_index: int) -> str | None:
-        return self.scene.by_id.get((body_id, link_index))
-
-    def set_collision_between(self, prim_a: str, prim_b: str, enabled: bool) -> None:
-        a, b = self._body(prim_a), self._body(prim_b)
-        self.client.setCollisionFilterPair(a.body_id, b.body_id, a.link, b.link, 1 if enabled else 0)
-
-    def set_gravity_enabled(self, prim_path: str, enabled: bool) -> None:
-        handle = self._body(prim_path)
-        if enabled:
-            self._gravity_off.discard(handle.path)
-        elif handle.kind == "dynamic":
-            self._gravity_off.add(handle.path)
-        self._gravity_plan = None
-
-    # -- lookups ---------------------------------------------------------------------------------
-    def _body(self, prim_path: str) -> BodyHandle:
-        handle = self.scene.bodies.get(prim_path)
-        if handle is not None:
-            return handle
-        owner = self._collider_owner(prim_path)
-        if owner is not None:
-            return self.scene.bodies[owner]
-        raise WorldError(f"{prim_path} is not a rigid body or collider of this stage")
-
-    def _collider_owner(self, prim_path: str) -> str | None:
-        for body in self.description.bodies.values():
-            if any(shape.path == prim_path for shape in body.shapes) and body.path in self.scene.bodies:
-                return body.path
-        return None
-
-    def _articulation(self, path: str) -> ArticulationHandle:
-        probe = path
-        while probe:
-            for articulation in self.scene.articulations.values():
-                if probe in articulation.members:
-                    return articulation
-            owner = self._collider_owner(probe)
-            if owner is not None and owner != probe:
-                probe = owner
-                continue
-            probe = probe.rsplit("/", 1)[0]
-        raise WorldError(f"{path} is not part of an articulation")
-
-    def _inertial_pose(self, handle: BodyHandle) -> Pose:
-        if handle.link == -1:
-            position, orientation = self.client.getBasePositionAndOrientation(handle.body_id)
-        else:
-            state = self.client.getLinkState(handle.body_id, handle.link, computeForwardKinematics=1)
-            position, orientation = state[0], state[1]
-        return tuple(position), tuple(orientation)
-
-    def _body_pose(self, handle: BodyHandle) -> Pose:
-        return compose(self._inertial_pose(handle), invert(handle.inertial_in_prim))
-
-    def _prim_offset(self, prim_path: str) -> tuple[str | None, Pose]:
-        """(nearest body ancestor or None, the prim's pose in it), from the stage's authored transforms."""
-        if prim_path in self._offsets:
-            return self._offsets[prim_path]
-        if self.stage is None:
-            raise WorldError(f"{prim_path} is not a rigid body of this stage")
-        from pxr import Gf, UsdGeom
-
-        prim = self.stage.GetPrimAtPath(prim_path)
-        if not prim:
-            raise WorldError(f"no prim {prim_path} on this stage")
-        transform = Gf.Transform(UsdGeom.XformCache().GetLocalToWorldTransform(prim))
-        scale = self.description.meters_per_unit
-        imaginary = transform.GetRotation().GetQuat().GetImaginary()
-        world = (tuple(float(c) * scale for c in transform.GetTranslation()),
-                 (imaginary[0], imaginary[1], imaginary[2], transform.GetRotation().GetQuat().GetReal()))
-        ancestor = prim.GetParent()
-        while ancestor and not ancestor.IsPseudoRoot() and str(ancestor.GetPath()) not in self.scene.bodies:
-            ancestor = ancestor.GetParent()
-        owner = str(ancestor.GetPath()) if ancestor and not ancestor.IsPseudoRoot() else None
-        offset = relative(self.description.bodies[owner].pose, world) if owner else world
-        self._offsets[prim_path] = (owner, offset)
-        return owner, offset
 
     # -- node-facing API ---------------------------------------------------------------------------
     def prim_pose(self, path: str):
@@ -469,6 +230,7 @@ class PyBulletWorld:
                           efforts: Sequence[float] | None = None) -> None:
         """Drive targets by DOF index (rad or m, rad/s or m/s); efforts are added to the drive force."""
         articulation = self._articulation(articulation_path)
+        targets = self.drive_targets[articulation.path]
         count = len(articulation.joint_paths)
         indices = list(indices)
         for name, values in (("positions", positions), ("velocities", velocities), ("efforts", efforts)):
@@ -477,15 +239,14 @@ class PyBulletWorld:
         for slot, index in enumerate(indices):
             if not 0 <= index < count:
                 raise WorldError(f"{articulation.path}: joint index {index} out of range (0..{count - 1})")
-            drive = articulation.drives[index]
-            if (positions is not None or velocities is not None) and drive is None:
+            if (positions is not None or velocities is not None) and articulation.drives[index] is None:
                 raise WorldError(f"joint {articulation.joint_paths[index]} has no drive to take a target")
             if positions is not None:
-                drive.target_position = float(positions[slot])
+                targets.positions[index] = float(positions[slot])
             if velocities is not None:
-                drive.target_velocity = float(velocities[slot])
+                targets.velocities[index] = float(velocities[slot])
             if efforts is not None:
-                articulation.efforts[index] = float(efforts[slot])
+                targets.efforts[index] = float(efforts[slot])
 
     def apply_force(self, path: str, force, position=None) -> None:
         """Apply a world-frame force (N) at a world point (default: the centre of mass) during the next step."""
@@ -527,160 +288,24 @@ class PyBulletWorld:
         return [Contact(self.prim_at(point[2], point[4]), tuple(point[6]), tuple(point[7]), point[8], point[9])
                 for point in points]
 
-    # -- attributes ------------------------------------------------------------------------------------
-    def _joint_dof(self, prim_path: str, name: str):
-        location = self.scene.joint_dofs.get(prim_path)
-        if location is None:
-            raise WorldError(f"{prim_path} has no attribute {name}: it is not a driven articulation joint")
-        articulation = self.scene.articulations[location[0]]
-        return articulation, location[1]
-
-    def _unit(self, prim_path: str, name: str) -> float:
-        """Scale from SI to the USD value of a joint attribute (degrees for angular joints)."""
-        joint = self.description.joints[prim_path]
-        angular = joint.kind == "revolute"
-        family = "angular" if ":angular:" in name else "linear" if ":linear:" in name else None
-        if family is not None and family != ("angular" if angular else "linear"):
-            raise WorldError(f"{prim_path} is a {joint.kind} joint: it has no attribute {name}")
-        return 180.0 / math.pi if angular else 1.0
-
     def get_attribute(self, prim_path: str, name: str):
-        if name.startswith("drive:") and name.endswith(("targetPosition", "targetVelocity")):
-            articulation, dof = self._joint_dof(prim_path, name)
-            scale = self._unit(prim_path, name)
-            drive = articulation.drives[dof]
-            if drive is None:
-                raise WorldError(f"{prim_path} has no drive, so no attribute {name}")
-            value = drive.target_position if name.endswith("targetPosition") else drive.target_velocity
-            return value * scale
-        if name.startswith("state:") and name.endswith((":position", ":velocity")):
-            articulation, dof = self._joint_dof(prim_path, name)
-            scale = self._unit(prim_path, name)
-            values = (self.joint_positions if name.endswith(":position") else self.joint_velocities)(articulation.path)
-            return values[dof] * scale
-        if name in ("physics:lowerLimit", "physics:upperLimit"):
-            joint = self.description.joints.get(prim_path)
-            if joint is None or joint.kind not in ("revolute", "prismatic"):
-                raise WorldError(f"{prim_path} has no attribute {name}: it is not a revolute or prismatic joint")
-            value = joint.lower if name == "physics:lowerLimit" else joint.upper
-            return value * (180.0 / math.pi if joint.kind == "revolute" else 1.0)
-        if name in ("xformOp:translate", "xformOp:orient", "physics:mass", "physics:velocity",
-                    "physics:angularVelocity"):
-            return self._get_body_attribute(prim_path, name)
-        return self._get_usd_attribute(prim_path, name)
-
-    def _parent_rotation(self, prim_path: str):
-        parent = prim_path.rsplit("/", 1)[0]
-        if not parent:
-            return (0.0, 0.0, 0.0, 1.0)
-        try:
-            return self.prim_pose(parent)[1]
-        except WorldError:
-            return (0.0, 0.0, 0.0, 1.0)
-
-    def _parent_pose(self, prim_path: str) -> Pose:
-        parent = prim_path.rsplit("/", 1)[0]
-        if not parent:
-            return IDENTITY_POSE
-        try:
-            return self.prim_pose(parent)
-        except WorldError:
-            return IDENTITY_POSE
-
-    def _get_body_attribute(self, prim_path: str, name: str):
-        handle = self.scene.bodies.get(prim_path)
-        if handle is None:
-            raise WorldError(f"{prim_path} has no attribute {name}: it is not a rigid body")
-        if name == "physics:mass":
-            return handle.mass
-        if name in ("xformOp:translate", "xformOp:orient"):
-            local = relative(self._parent_pose(prim_path), self._body_pose(handle))
-            return local[0] if name == "xformOp:translate" else local[1]
-        linear, angular = self.prim_velocity(prim_path)
-        inverse = invert(((0.0, 0.0, 0.0), self._parent_rotation(prim_path)))[1]
-        if name == "physics:velocity":
-            return quat_rotate(inverse, linear)
-        return tuple(c * 180.0 / math.pi for c in quat_rotate(inverse, angular))
-
-    def _get_usd_attribute(self, prim_path: str, name: str):
-        if self.stage is not None:
-            prim = self.stage.GetPrimAtPath(prim_path)
-            if prim:
-                attribute = prim.GetAttribute(name)
-                if attribute and attribute.HasValue():
-                    return _plain(attribute.Get())
-                raise WorldError(f"{prim_path} has no attribute {name}")
-        raise WorldError(f"no prim {prim_path} on this stage")
+        """A simulated attribute (see ``ATTRIBUTES``), else the authored USD value (read-only)."""
+        return attributes.get_attribute(self, prim_path, name)
 
     def set_attribute(self, prim_path: str, name: str, value) -> None:
-        if name.startswith("drive:") and name.endswith(("targetPosition", "targetVelocity")):
-            articulation, dof = self._joint_dof(prim_path, name)
-            scale = self._unit(prim_path, name)
-            drive = articulation.drives[dof]
-            if drive is None:
-                raise WorldError(f"{prim_path} has no drive, so no attribute {name}")
-            if name.endswith("targetPosition"):
-                drive.target_position = float(value) / scale
-            else:
-                drive.target_velocity = float(value) / scale
-            return
-        handle = self.scene.bodies.get(prim_path)
-        if name in ("xformOp:translate", "xformOp:orient", "physics:mass", "physics:velocity",
-                    "physics:angularVelocity"):
-            if handle is None:
-                raise WorldError(f"{prim_path} has no writable attribute {name}: it is not a rigid body")
-            self._set_body_attribute(handle, name, value)
-            return
-        if name in ATTRIBUTES:
-            raise WorldError(f"{prim_path}: attribute {name} is read-only")
-        raise WorldError(f"{prim_path}: attribute {name} cannot be written (writable: "
-                         + ", ".join(n for n, doc in ATTRIBUTES.items() if doc.startswith("RW")) + ")")
+        attributes.set_attribute(self, prim_path, name, value)
 
-    def _set_body_attribute(self, handle: BodyHandle, name: str, value):
-        client = self.client
-        if name == "physics:mass":
-            if handle.kind != "dynamic":
-                raise WorldError(f"{handle.path}: physics:mass can only be set on a dynamic body")
-            mass = float(value)
-            if not mass > 0:
-                raise WorldError(f"{handle.path}: physics:mass must be positive, got {value}")
-            inertia = client.getDynamicsInfo(handle.body_id, handle.link)[2]
-            client.changeDynamics(handle.body_id, handle.link, mass=mass,
-                                  localInertiaDiagonal=[c * mass / handle.mass for c in inertia])
-            handle.mass = mass
-            self._gravity_plan = None
-            return
-        vector = tuple(float(c) for c in value)
-        if name in ("xformOp:translate", "xformOp:orient"):
-            if handle.link != -1:
-                raise WorldError(f"{handle.path}: {name} can only be written on a free body or an articulation root")
-            parent = self._parent_pose(handle.path)
-            local = relative(parent, self._body_pose(handle))
-            local = (vector, local[1]) if name == "xformOp:translate" else (local[0], vector)
-            target = compose(compose(parent, local), handle.inertial_in_prim)
-            client.resetBasePositionAndOrientation(handle.body_id, target[0], target[1])
-            return
-        if handle.link != -1:
-            raise WorldError(f"{handle.path}: {name} can only be written on a free body or an articulation root")
-        rotation = self._parent_rotation(handle.path)
-        linear, angular = client.getBaseVelocity(handle.body_id)
-        if name == "physics:velocity":
-            linear = quat_rotate(rotation, vector)
-        else:
-            angular = quat_rotate(rotation, tuple(c * math.pi / 180.0 for c in vector))
-        client.resetBaseVelocity(handle.body_id, linear, angular)
+    def set_collision_between(self, prim_a: str, prim_b: str, enabled: bool) -> None:
+        a, b = self._body(prim_a), self._body(prim_b)
+        self.client.setCollisionFilterPair(a.body_id, b.body_id, a.link, b.link, 1 if enabled else 0)
 
+    def gravity_enabled(self, prim_path: str) -> bool:
+        """Whether gravity acts on the body (as authored, unless switched since; kinematic: as authored)."""
+        return self.gravity_switches.enabled(self._body(prim_path))
 
-def _plain(value):
-    """USD values as plain Python: Gf vectors and arrays -> tuples, quaternions -> (x, y, z, w)."""
-    if hasattr(value, "GetImaginary") and hasattr(value, "GetReal"):
-        imaginary = value.GetImaginary()
-        return (float(imaginary[0]), float(imaginary[1]), float(imaginary[2]), float(value.GetReal()))
-    if isinstance(value, (bool, int, float, str)):
-        return value
-    if hasattr(value, "__len__") and not isinstance(value, str):
-        return tuple(_plain(v) for v in value)
-    return str(value) if value is not None else None
+    def set_gravity_enabled(self, prim_path: str, enabled: bool) -> None:
+        """Switch gravity for one dynamic body (a counter-force -m g at its centre of mass each step)."""
+        self.gravity_switches.switch(self._body(prim_path), enabled)
 
 
 __all__ = ["PyBulletWorld", "RayHit", "Contact", "ATTRIBUTES"]

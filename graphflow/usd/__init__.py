@@ -2,8 +2,8 @@
 
 * ``physics_import.load_description(stage_or_path) -> StageDescription``: the
   physics of a stage in SI units, parsed with ``UsdPhysics.LoadUsdPhysicsFromRange``;
-* ``description``: the dataclasses it returns (no pxr, no pybullet);
-* ``transforms``: pose helpers with graphflow's (x, y, z, w) quaternions;
+* ``description``: the dataclasses it returns (no pxr, no pybullet); poses are
+  ``graphflow.poses`` (graphflow's (x, y, z, w) quaternions);
 * ``errors``: ``StageError`` (also ``graphflow.physics.StageError``) and
   ``UnsupportedPrimWarning``.
 

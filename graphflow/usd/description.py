@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from .transforms import IDENTITY_POSE, Pose, Quat, Vec3
+from graphflow.poses import IDENTITY_POSE, Pose, Quat, Vec3
 
 SHAPE_KINDS = ("box", "sphere", "capsule", "cylinder", "cone", "plane", "convex_mesh", "triangle_mesh")
 JOINT_KINDS = ("fixed", "revolute", "prismatic", "spherical", "d6")
@@ -121,10 +121,6 @@ class Joint:
     drives: dict[str, Drive] = field(default_factory=dict)
     break_force: float = float("inf")
     break_torque: float = float("inf")
-
-    @property
-    def is_angular(self) -> bool:
-        return self.kind == "revolute"
 
 
 @dataclass

@@ -25,7 +25,7 @@ from pathlib import Path
 from .description import (AxisLimit, Articulation, Body, Drive, Joint, MassProperties, Material, Shape,
                           StageDescription, SurfaceGripper)
 from .errors import StageError, UnsupportedPrimWarning
-from .transforms import AXIS_VECTORS, Pose, compose, quat_normalize, quat_rotate, relative, twist_angle
+from graphflow.poses import AXIS_VECTORS, Pose, compose, quat_normalize, quat_rotate, relative, twist_angle
 
 DEFAULT_GRAVITY = 9.81                 # m/s^2, along minus the up axis
 IN_MEMORY = "<in-memory stage>"

@@ -5,7 +5,7 @@ import pybullet
 import pytest
 from pybullet_utils.bullet_client import BulletClient
 
-from graphflow.gripper.runtime import RIGID, AxisCompliance
+from graphflow.world import RIGID, AxisCompliance
 from graphflow.physics.attachment import PyBulletAttachments
 
 G = 9.81

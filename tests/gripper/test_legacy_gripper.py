@@ -12,7 +12,7 @@ import pytest
 
 from graphflow.gripper.legacy import SurfaceGripper
 from graphflow.physics import asset_path, create_world
-from graphflow.usd.transforms import quat_rotate, relative
+from graphflow.poses import quat_rotate, relative
 
 EE = "/ur10/ee_link"
 CUBE = "/World/Cube"

@@ -1,82 +1,66 @@
-"""The status machine of reference §2.4-2.7 and 2.11 on a scripted fake backend (no physics)."""
+"""The status machine of reference §2.4-2.7 and 2.11 on the fake backend (kinematic boxes, scripted forces).
+
+The gripper talks to ``FakeWorld`` only through the world interface, as it talks to PyBullet.
+Scene: the gripper body is a box above z = 0 (bottom at *body_bottom*); attachment point i
+sits at (i, 0, 0) with its forward axis (+Z) turned to point down; objects are boxes whose
+tops are 10 mm below the points.
+"""
 import pytest
 
 from graphflow.gripper.runtime import (SETTLING_DELAY, AttachmentPoint, GripperProperties, GripperStatus,
                                        SurfaceGripperComponent)
+from graphflow.testing_backend import FakeWorld
 
 STEP = 1.0 / 60.0
-DOWN = ((0.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0))    # forward +Z turned to point down
+DOWN = (1.0, 0.0, 0.0, 0.0)        # forward +Z turned to point down
+BODY_TOP = 0.1
+BODY_X = 0.5
 
 
-class FakeBackend:
-    """Rays hit whatever ``targets`` maps a point's x position to; forces are scripted per object."""
-
-    def __init__(self):
-        self.targets = {}          # joint x position -> (object path, distance) the ray finds
-        self.forces = {}           # object path -> force on the gripper
-        self.attached = {}
-        self.rays = []
-        self._next = 0
-
-    def same_body(self, a, b):
-        return a == b
-
-    def attachment_frame(self, point):
-        return point.local_pose0[0], DOWN[1]
-
-    def raycast(self, origin, direction, length):
-        self.rays.append((origin, length))
-        hit = self.targets.get(origin[0])
-        if hit is None:
-            return None
-        path, distance = hit
-        return path if distance <= length else None
-
-    def attach(self, point, target):
-        self._next += 1
-        self.attached[self._next] = target
-        return self._next
-
-    def detach(self, handle):
-        self.attached.pop(handle, None)
-
-    def force_on_gripper(self, handle, rigid_rows_only=True):
-        return self.forces.get(self.attached[handle], (0.0, 0.0, 0.0))
-
-    def torque_on_gripper(self, handle):
-        return 0.0, 0.0, 0.0
+def _place(world, path, xs, gap=0.01):
+    """A 10 cm tall box under the points at *xs*, its top *gap* below them."""
+    center = sum(xs) / len(xs)
+    half_x = (max(xs) - min(xs)) / 2 + 0.2
+    world.add_box(path, (center, 0.0, -gap - 0.05), (half_x, 0.1, 0.05))
 
 
-def _gripper(count=2, **properties):
-    backend = FakeBackend()
+def _gripper(count=2, body_bottom=0.001, **properties):
+    world = FakeWorld(STEP)
+    world.add_box("/body", (BODY_X, 0.0, (BODY_TOP + body_bottom) / 2),
+                  (1.0, 0.1, (BODY_TOP - body_bottom) / 2))
+    body_z = (BODY_TOP + body_bottom) / 2
     actions = []
-    points = [AttachmentPoint(f"/j{i}", "/body", ((float(i), 0.0, 0.0), DOWN[1]), forward_axis="Z")
+    points = [AttachmentPoint(f"/j{i}", "/body", ((float(i) - BODY_X, 0.0, -body_z), DOWN), forward_axis="Z")
               for i in range(count)]
-    component = SurfaceGripperComponent("/G", points, backend, actions.append,
+    component = SurfaceGripperComponent("/G", points, world, actions.append,
                                         GripperProperties(max_grip_distance=0.02, **properties))
+    attachments = world.attachments
 
     def step():
+        world.step()
         component.on_physics_step(STEP)
         for action in actions:          # the manager's queue, run at the end of the update
+            point = points[action[2]]
             if action[0] == "attach":
-                component.handles[action[2]] = backend.attach(points[action[2]], action[3])
+                component.handles[action[2]] = attachments.attach(point.body0_path, point.local_pose0, action[3])
             else:
                 handle = component.handles.pop(action[2], None)
                 if handle is not None:
-                    backend.detach(handle)
+                    attachments.detach(handle)
         actions.clear()
 
-    return component, backend, step
+    return component, world, step
 
 
 def test_close_with_every_point_hitting_is_closed_at_once():
-    component, backend, step = _gripper()
-    backend.targets = {0.0: ("/box", 0.01), 1.0: ("/box", 0.01)}
+    component, world, step = _gripper()
+    _place(world, "/box", [0.0, 1.0])
     component.set_status(GripperStatus.CLOSED)
     assert component.status == GripperStatus.CLOSED
     assert component.gripped_objects() == []          # attaches are queued until the next update
     step()
     assert component.gripped_objects() == ["/box"]    # two points, one object, listed once
+    assert world.attachments.held() == ["/box", "/box"]
 
 
 def test_failed_close_without_retry_shows_closing_until_the_next_step():
@@ -88,7 +72,7 @@ def test_failed_close_without_retry_shows_closing_until_the_next_step():
 
 
 def test_retry_window_counts_physics_time_then_gives_up():
-    component, backend, step = _gripper(retry_interval=0.1)
+    component, world, step = _gripper(retry_interval=0.1)
     component.set_status(GripperStatus.CLOSED)
     for _ in range(6):
         step()
@@ -98,25 +82,25 @@ def test_retry_window_counts_physics_time_then_gives_up():
 
 
 def test_object_arriving_inside_the_retry_window_closes():
-    component, backend, step = _gripper(retry_interval=1.0)
+    component, world, step = _gripper(retry_interval=1.0)
     component.set_status(GripperStatus.CLOSED)
     step()
-    backend.targets = {0.0: ("/box", 0.01), 1.0: ("/box", 0.01)}
+    _place(world, "/box", [0.0, 1.0])
     step()
     assert component.status == GripperStatus.CLOSED and component.retry_elapsed == 0.0
 
 
 def test_partial_grip_stays_closing_and_keeps_casting_after_the_window():
-    component, backend, step = _gripper(retry_interval=0.05)
-    backend.targets = {0.0: ("/box", 0.01)}
+    component, world, step = _gripper(retry_interval=0.05)
+    _place(world, "/box", [0.0])
     component.set_status(GripperStatus.CLOSED)
     for _ in range(30):
         step()
     assert component.status == GripperStatus.CLOSING and not component.retry_active
-    rays = len(backend.rays)
+    rays = len(world.rays)
     step()
-    assert len(backend.rays) == rays + 1               # the free point still raycasts
-    backend.targets[1.0] = ("/other", 0.01)
+    assert len(world.rays) == rays + 1                 # the free point still raycasts
+    _place(world, "/other", [1.0])
     for _ in range(SETTLING_DELAY):
         step()
     assert component.status == GripperStatus.CLOSED
@@ -134,40 +118,38 @@ def test_close_while_closing_does_not_restart_the_retry_timer():
 
 
 def test_open_releases_everything():
-    component, backend, step = _gripper()
-    backend.targets = {0.0: ("/a", 0.01), 1.0: ("/b", 0.01)}
+    component, world, step = _gripper()
+    _place(world, "/a", [0.0])
+    _place(world, "/b", [1.0])
     component.set_status(GripperStatus.CLOSED)
     step()
+    assert world.attachments.held() == ["/a", "/b"]
     component.set_status(GripperStatus.OPEN)
     assert component.status == GripperStatus.OPEN and component.gripped_objects() == []
     step()
-    assert backend.attached == {} and component.events.releases == 1
+    assert world.attachments.holds == {} and component.events.releases == 1
 
 
 def test_reach_is_max_grip_distance_from_the_joint_origin_and_self_hits_step_1mm():
-    component, backend, step = _gripper(count=1)
+    component, world, step = _gripper(count=1, body_bottom=-0.0055)     # the body reaches 5.5 mm below the point
+    _place(world, "/box", [0.0])
     point = component.points[0]
     point.clearance_offset = 0.004
-    calls = []
-
-    def raycast(origin, direction, length):
-        calls.append((round(origin[2], 6), round(length, 6)))
-        return "/body" if len(calls) < 3 else "/box"
-
-    backend.raycast = raycast
     component.set_status(GripperStatus.CLOSED)
-    # rays start 4, 5 and 6 mm down the forward axis (-Z); each ends 20 mm from the joint origin
-    assert calls == [(-0.004, 0.016), (-0.005, 0.015), (-0.006, 0.014)]
+    # rays start 4, 5 and 6 mm down the forward axis (-Z); each ends 20 mm from the joint origin;
+    # the first two start inside the gripper's own body
+    assert [(round(origin[2], 6), round(length, 6)) for origin, _, length in world.rays] == [
+        (-0.004, 0.016), (-0.005, 0.015), (-0.006, 0.014)]
     assert point.clearance_offset == pytest.approx(0.006)
     assert component.status == GripperStatus.CLOSED
 
 
 def test_settling_delay_then_signed_coaxial_and_shear_limits():
-    component, backend, step = _gripper(count=1, coaxial_force_limit=1.0, shear_force_limit=2.0)
-    backend.targets = {0.0: ("/box", 0.01)}
+    component, world, step = _gripper(count=1, coaxial_force_limit=1.0, shear_force_limit=2.0)
+    _place(world, "/box", [0.0])
     component.set_status(GripperStatus.CLOSED)
     step()
-    backend.forces["/box"] = (0.0, 0.0, -5.0)           # the object pulls the gripper along the forward axis
+    world.attachments.forces["/box"] = (0.0, 0.0, -5.0)           # the object pulls the gripper along the forward axis
     for _ in range(4):                                  # settling: 10 checks (synchronous close + steps)
         step()
     assert component.status == GripperStatus.CLOSED
@@ -177,36 +159,37 @@ def test_settling_delay_then_signed_coaxial_and_shear_limits():
 
 
 def test_pressing_in_never_breaks_coaxially_and_limits_at_or_below_zero_are_off():
-    component, backend, step = _gripper(count=1, coaxial_force_limit=1.0, shear_force_limit=0.0)
-    backend.targets = {0.0: ("/box", 0.01)}
+    component, world, step = _gripper(count=1, coaxial_force_limit=1.0, shear_force_limit=0.0)
+    _place(world, "/box", [0.0])
     component.set_status(GripperStatus.CLOSED)
-    backend.forces["/box"] = (50.0, 0.0, 5.0)          # pushed in (negative coaxial), 50 N across: shear is off
+    world.attachments.forces["/box"] = (50.0, 0.0, 5.0)          # pushed in (negative coaxial), 50 N across: shear is off
     for _ in range(30):
         step()
     assert component.status == GripperStatus.CLOSED
 
 
 def test_break_with_retry_armed_goes_back_to_closing_and_regrips():
-    component, backend, step = _gripper(count=1, shear_force_limit=1.0, retry_interval=1.0)
-    backend.targets = {0.0: ("/box", 0.01)}
+    component, world, step = _gripper(count=1, shear_force_limit=1.0, retry_interval=1.0)
+    _place(world, "/box", [0.0])
     component.set_status(GripperStatus.CLOSED)
     step()
-    backend.forces["/box"] = (5.0, 0.0, 0.0)
+    world.attachments.forces["/box"] = (5.0, 0.0, 0.0)
     for _ in range(SETTLING_DELAY):
         step()
     assert component.status == GripperStatus.CLOSING
-    backend.forces.clear()
+    world.attachments.forces.clear()
     for _ in range(SETTLING_DELAY):
         step()
     assert component.status == GripperStatus.CLOSED and component.gripped_objects() == ["/box"]
 
 
 def test_partial_break_without_retry_stays_closed_and_never_regrips():
-    component, backend, step = _gripper(shear_force_limit=1.0)
-    backend.targets = {0.0: ("/a", 0.01), 1.0: ("/b", 0.01)}
+    component, world, step = _gripper(shear_force_limit=1.0)
+    _place(world, "/a", [0.0])
+    _place(world, "/b", [1.0])
     component.set_status(GripperStatus.CLOSED)
     step()
-    backend.forces["/a"] = (5.0, 0.0, 0.0)
+    world.attachments.forces["/a"] = (5.0, 0.0, 0.0)
     for _ in range(40):
         step()
     assert component.status == GripperStatus.CLOSED and component.gripped_objects() == ["/b"]
@@ -230,3 +213,11 @@ def test_status_tokens_and_order():
     assert [int(s) for s in GripperStatus] == [0, 1, 2]
     assert GripperStatus.from_token("Closed") == GripperStatus.CLOSED
     assert GripperStatus.from_token("bogus") == GripperStatus.OPEN
+
+
+def test_an_object_beyond_max_grip_distance_is_not_gripped():
+    component, world, step = _gripper(count=1)
+    _place(world, "/box", [0.0], gap=0.025)             # 25 mm below the point, the reach is 20 mm
+    component.set_status(GripperStatus.CLOSED)
+    step()
+    assert component.status == GripperStatus.OPEN and world.attachments.holds == {}

@@ -6,7 +6,7 @@ import pytest
 from pxr import Gf, Usd, UsdGeom, UsdPhysics, UsdShade
 
 from graphflow.physics import create_world
-from graphflow.usd.transforms import compose, quat_from_axis_angle, relative
+from graphflow.poses import compose, quat_from_axis_angle, relative
 
 SAMPLES = Path(__file__).resolve().parents[3] / "shared" / "usda_samples"
 KRABBY = SAMPLES / "krabby_crab_simple.usda"

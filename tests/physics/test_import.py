@@ -231,6 +231,49 @@ def test_unsupported_prims_warn_once_with_their_path():
     assert [path for path, _ in description.unsupported] == ["/World/Rope"]
 
 
+def test_prims_the_build_leaves_out_warn_once_and_leave_the_parsed_stage_untouched():
+    stage = make_stage()
+    add_body(stage, "/World/Tool", size=0.1, mass=1.0, position=(0, 0, 1.0))
+    joint = UsdPhysics.Joint.Define(stage, "/World/Tool/loose")      # a D6 the gripper does not own
+    joint.CreateBody0Rel().SetTargets(["/World/Tool"])
+    description = load_description(stage)
+    with pytest.warns(UnsupportedPrimWarning, match="/World/Tool/loose"):
+        world = create_world(stage)
+    with world:
+        assert ("/World/Tool/loose", "a D6 joint that is not a surface-gripper attachment point") in world.unsupported
+        assert world.description.unsupported == description.unsupported == []
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            world.reset()                                            # the same build: no second warning
+        assert len(world.unsupported) == 1
+
+
+def test_drive_targets_are_run_time_state_restored_by_reset():
+    stage = make_stage()
+    add_body(stage, "/World/Base", size=0.1, mass=1.0)
+    add_body(stage, "/World/Slider", size=0.1, mass=1.0, position=(0, 0, 0.2))
+    UsdPhysics.ArticulationRootAPI.Apply(stage.GetPrimAtPath("/World"))
+    fixed = UsdPhysics.FixedJoint.Define(stage, "/World/anchor")
+    fixed.CreateBody1Rel().SetTargets(["/World/Base"])
+    joint = UsdPhysics.PrismaticJoint.Define(stage, "/World/slide")
+    joint.CreateAxisAttr("Z")
+    joint.CreateBody0Rel().SetTargets(["/World/Base"])
+    joint.CreateBody1Rel().SetTargets(["/World/Slider"])
+    joint.CreateLocalPos0Attr(Gf.Vec3f(0, 0, 0.2))
+    drive = UsdPhysics.DriveAPI.Apply(joint.GetPrim(), "linear")
+    drive.CreateStiffnessAttr(1000.0)
+    drive.CreateDampingAttr(100.0)
+    drive.CreateTargetPositionAttr(0.05)
+    with create_world(stage) as world:
+        name = "drive:linear:physics:targetPosition"
+        assert world.get_attribute("/World/slide", name) == pytest.approx(0.05)
+        world.set_joint_targets("/World", [0], positions=[0.1])
+        assert world.get_attribute("/World/slide", name) == pytest.approx(0.1)
+        assert world.description.joints["/World/slide"].drive.target_position == pytest.approx(0.05)
+        world.reset()
+        assert world.get_attribute("/World/slide", name) == pytest.approx(0.05)
+
+
 def test_missing_file_is_a_one_line_stage_error(tmp_path):
     with pytest.raises(StageError, match=r"nothing\.usda: no such stage file") as caught:
         create_world(tmp_path / "nothing.usda")
@@ -279,7 +322,7 @@ def test_a_body_without_enabled_colliders_gets_its_geometry_inertia():
         assert properties.mass == pytest.approx(mass)
         assert sorted(properties.diagonal_inertia) == pytest.approx(sorted(box(mass, *size)), rel=1e-6)
         # the principal axes carry each principal moment onto the body axis it belongs to
-        from graphflow.usd.transforms import quat_rotate
+        from graphflow.poses import quat_rotate
         for moment, axis in zip(properties.diagonal_inertia, ((1, 0, 0), (0, 1, 0), (0, 0, 1))):
             direction = [abs(c) for c in quat_rotate(properties.principal_axes, axis)]
             assert moment == pytest.approx(box(mass, *size)[direction.index(max(direction))], rel=1e-6)

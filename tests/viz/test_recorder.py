@@ -48,13 +48,15 @@ def test_the_default_camera_frames_the_whole_robot(ur10_world):
     assert not (robot[0].any() or robot[-1].any() or robot[:, 0].any() or robot[:, -1].any())   # nothing cut off
 
 
-def test_frames_are_taken_every_kth_tick(ur10_world, tmp_path):
+def test_frames_are_taken_every_kth_tick_by_the_world_service(ur10_world, tmp_path):
     pytest.importorskip("PIL")
-    recorder = VideoRecorder(ur10_world, tmp_path / "frames", fps=20.0, size=SIZE)
+    recorder = ur10_world.services.add(VideoRecorder(ur10_world, tmp_path / "frames", fps=20.0, size=SIZE))
     assert recorder.ticks_per_frame == 3 and recorder.fps == pytest.approx(20.0)
     for _ in range(9):
         ur10_world.step()
-        recorder.capture()
+    assert recorder.frame_count == 4
+    ur10_world.reset()                                   # the restored initial state is the next frame
+    assert recorder.frame_count == 5
     recorder.close()
     assert sorted(p.name for p in (tmp_path / "frames").iterdir()) == [
         "tick_000000.png", "tick_000003.png", "tick_000006.png", "tick_000009.png"]

@@ -1,8 +1,9 @@
 """Rigid transforms as plain tuples: positions (x, y, z), quaternions (x, y, z, w).
 
-Shared by the USD importer and the PyBullet backend so both sides agree on one
-convention (graphflow's: xyzw, like PyBullet and OmniGraph attributes; USD's
-Gf quaternions are (real, i, j, k) and are converted at the boundary).
+Core pose math, shared by the USD importer, the physics backends, the gripper
+and nodes so all agree on one convention (graphflow's: xyzw, like PyBullet and
+OmniGraph attributes; USD's Gf quaternions are (real, i, j, k) and are
+converted at the USD boundary).
 """
 from __future__ import annotations
 
@@ -77,6 +78,3 @@ def twist_angle(q: Quat, axis: Vec3) -> float:
     projection = q[0] * axis[0] + q[1] * axis[1] + q[2] * axis[2]
     return 2.0 * math.atan2(projection, q[3]) if (projection or q[3]) else 0.0
 
-
-def wrap_angle(angle: float) -> float:
-    return math.atan2(math.sin(angle), math.cos(angle))

@@ -1,0 +1,131 @@
+"""Prim path -> built PyBullet object, and the poses that follow from it: a mixin of ``PyBulletWorld``.
+
+A mixin rather than a helper object so the world's hot paths (``prim_pose``,
+``joint_positions``) reach these with one method lookup. It uses the world's
+``client``, ``description``, ``stage``, ``scene`` and ``_offsets`` (a cache
+cleared on every rebuild).
+"""
+from __future__ import annotations
+
+from graphflow.poses import IDENTITY_POSE, Pose, compose, invert, relative
+from graphflow.world import WorldError
+
+from .builder import ArticulationHandle, BodyHandle
+
+
+class SceneLookups:
+    """Finding bodies, colliders and articulations by prim path; their world poses."""
+
+    # -- bodies ----------------------------------------------------------------------------------
+    def _body(self, prim_path: str) -> BodyHandle:
+        handle = self.scene.bodies.get(prim_path)
+        if handle is not None:
+            return handle
+        owner = self._collider_owner(prim_path)
+        if owner is not None:
+            return self.scene.bodies[owner]
+        raise WorldError(f"{prim_path} is not a rigid body or collider of this stage")
+
+    def body_handle(self, prim_path: str) -> BodyHandle | None:
+        """The built body that simulates a body or collider prim, or None."""
+        try:
+            return self._body(prim_path)
+        except WorldError:
+            return None
+
+    def body_of(self, prim_path: str) -> str | None:
+        handle = self.body_handle(prim_path)
+        return None if handle is None else handle.path
+
+    def same_body(self, path_a: str, path_b: str) -> bool:
+        if path_a == path_b:
+            return True
+        body = self.body_of(path_a)
+        return body is not None and body == self.body_of(path_b)
+
+    def body_link(self, prim_path: str) -> tuple[int, int]:
+        """(PyBullet body id, link index) of a body prim or of a collider under it."""
+        handle = self._body(prim_path)
+        return handle.body_id, handle.link
+
+    def inertial_in_prim(self, prim_path: str) -> Pose:
+        """The link's inertial (centre-of-mass) frame in the prim frame: PyBullet constraint frames are relative to it."""
+        return self._body(prim_path).inertial_in_prim
+
+    def prim_at(self, body_id: int, link_index: int) -> str | None:
+        return self.scene.by_id.get((body_id, link_index))
+
+    def _collider_owner(self, prim_path: str) -> str | None:
+        for body in self.description.bodies.values():
+            if any(shape.path == prim_path for shape in body.shapes) and body.path in self.scene.bodies:
+                return body.path
+        return None
+
+    # -- articulations ---------------------------------------------------------------------------
+    def _articulation(self, path: str) -> ArticulationHandle:
+        probe = path
+        while probe:
+            for articulation in self.scene.articulations.values():
+                if probe in articulation.members:
+                    return articulation
+            owner = self._collider_owner(probe)
+            if owner is not None and owner != probe:
+                probe = owner
+                continue
+            probe = probe.rsplit("/", 1)[0]
+        raise WorldError(f"{path} is not part of an articulation")
+
+    # -- poses -----------------------------------------------------------------------------------
+    def _inertial_pose(self, handle: BodyHandle) -> Pose:
+        if handle.link == -1:
+            position, orientation = self.client.getBasePositionAndOrientation(handle.body_id)
+        else:
+            state = self.client.getLinkState(handle.body_id, handle.link, computeForwardKinematics=1)
+            position, orientation = state[0], state[1]
+        return tuple(position), tuple(orientation)
+
+    def _body_pose(self, handle: BodyHandle) -> Pose:
+        return compose(self._inertial_pose(handle), invert(handle.inertial_in_prim))
+
+    def _prim_offset(self, prim_path: str) -> tuple[str | None, Pose]:
+        """(nearest body ancestor or None, the prim's pose in it), from the stage's authored transforms."""
+        if prim_path in self._offsets:
+            return self._offsets[prim_path]
+        if self.stage is None:
+            raise WorldError(f"{prim_path} is not a rigid body of this stage")
+        from pxr import Gf, UsdGeom
+
+        prim = self.stage.GetPrimAtPath(prim_path)
+        if not prim:
+            raise WorldError(f"no prim {prim_path} on this stage")
+        transform = Gf.Transform(UsdGeom.XformCache().GetLocalToWorldTransform(prim))
+        scale = self.description.meters_per_unit
+        imaginary = transform.GetRotation().GetQuat().GetImaginary()
+        world = (tuple(float(c) * scale for c in transform.GetTranslation()),
+                 (imaginary[0], imaginary[1], imaginary[2], transform.GetRotation().GetQuat().GetReal()))
+        ancestor = prim.GetParent()
+        while ancestor and not ancestor.IsPseudoRoot() and str(ancestor.GetPath()) not in self.scene.bodies:
+            ancestor = ancestor.GetParent()
+        owner = str(ancestor.GetPath()) if ancestor and not ancestor.IsPseudoRoot() else None
+        offset = relative(self.description.bodies[owner].pose, world) if owner else world
+        self._offsets[prim_path] = (owner, offset)
+        return owner, offset
+
+    def _parent_pose(self, prim_path: str) -> Pose:
+        """World pose of the prim's parent (identity at the root or when the parent has no pose)."""
+        parent = prim_path.rsplit("/", 1)[0]
+        if not parent:
+            return IDENTITY_POSE
+        try:
+            return self.prim_pose(parent)
+        except WorldError:
+            return IDENTITY_POSE
+
+    def _parent_rotation(self, prim_path: str):
+        parent = prim_path.rsplit("/", 1)[0]
+        if not parent:
+            return (0.0, 0.0, 0.0, 1.0)
+        try:
+            return self.prim_pose(parent)[1]
+        except WorldError:
+            return (0.0, 0.0, 0.0, 1.0)

@@ -1,0 +1,81 @@
+"""The package layering the architecture relies on, read from the source with ``ast``.
+
+Units are the top-level modules of ``graphflow`` and its sub-packages (a package is one unit);
+every import counts, lazy ones inside functions included.
+"""
+import ast
+from pathlib import Path
+
+import networkx as nx
+
+ROOT = Path(__file__).resolve().parents[1]
+PACKAGE = ROOT / "graphflow"
+
+
+def _unit(module: str) -> str | None:
+    """The unit a dotted module name belongs to: ``graphflow.physics.world`` -> ``graphflow.physics``."""
+    parts = module.split(".")
+    if parts[0] != "graphflow":
+        return None
+    if len(parts) == 1 or not ((PACKAGE / parts[1]).is_dir() or (PACKAGE / f"{parts[1]}.py").exists()):
+        return "graphflow"
+    return f"graphflow.{parts[1]}"
+
+
+def _module_name(path: Path) -> str:
+    parts = list(path.relative_to(ROOT).with_suffix("").parts)
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def _imports(path: Path):
+    """(module imported, line) for every import statement in a file, relative imports resolved."""
+    package = _module_name(path).split(".") if path.name == "__init__.py" else _module_name(path).split(".")[:-1]
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.Import):
+            for alias in node.names:
+                yield alias.name, node.lineno
+        elif isinstance(node, ast.ImportFrom):
+            base = package[:len(package) - node.level + 1] if node.level else []
+            module = ".".join(base + ([node.module] if node.module else []))
+            for alias in node.names:
+                yield (f"{module}.{alias.name}" if not node.module or module == "graphflow" else module), node.lineno
+
+
+def _unit_graph() -> nx.DiGraph:
+    graph = nx.DiGraph()
+    for path in PACKAGE.rglob("*.py"):
+        source = _unit(_module_name(path))
+        for module, line in _imports(path):
+            target = _unit(module)
+            if target is not None and target != source:
+                graph.add_edge(source, target, where=f"{path.relative_to(ROOT)}:{line}")
+    return graph
+
+
+def test_no_import_cycle_between_packages_and_modules():
+    graph = _unit_graph()
+    cycles = list(nx.simple_cycles(graph))
+    described = [" -> ".join(f"{a} ({graph.edges[a, b]['where']})" for a, b in zip(c, c[1:] + c[:1]))
+                 for c in cycles]
+    assert cycles == [], described
+
+
+def test_the_core_and_the_gripper_stand_on_the_world_interface_not_on_physics():
+    graph = _unit_graph()
+    for unit in ("graphflow.world", "graphflow.poses", "graphflow.gripper", "graphflow.testing_backend"):
+        reached = nx.descendants(graph, unit)
+        assert "graphflow.physics" not in reached, f"{unit} reaches graphflow.physics"
+    assert graph.has_edge("graphflow.physics", "graphflow.world")     # the backend implements the interface
+
+
+def test_only_graphflow_physics_imports_pybullet():
+    importers = sorted(str(path.relative_to(ROOT)) for folder in (PACKAGE, ROOT / "nodes")
+                       for path in folder.rglob("*.py")
+                       if any(module.split(".")[0] in ("pybullet", "pybullet_utils") for module, _ in _imports(path)))
+    assert importers and all(path.startswith("graphflow/physics/") for path in importers), importers
+
+
+def test_nodes_reach_physics_only_through_the_world_they_are_given():
+    importers = sorted(str(path.relative_to(ROOT)) for path in (ROOT / "nodes").rglob("*.py")
+                       if any(module.startswith("graphflow.physics") for module, _ in _imports(path)))
+    assert importers == []
