@@ -143,16 +143,21 @@ def _seed_numpy(seed: int) -> None:
 
 
 def command_run(args) -> int:
+    from .checks import CheckEvaluator
     from .runtime import Simulation
+    from .scenario import ScenarioResult, run_seconds, scripted_inputs
 
     document = _load(args.graph)
-    random.seed(args.seed)
-    _seed_numpy(args.seed)
+    seed = args.seed if args.seed is not None else int(document.scenario.get("seed", 0))
+    random.seed(seed)
+    _seed_numpy(seed)
     if args.record:
         _check_recording(args, document)
     try:
         keys = scripted_keys(args.keys, args.key)
         pad = scripted_pad(args.gamepad, args.pad)
+        if not args.gui and keys is None and pad is None:   # the graph's own scripted inputs (its scenario)
+            keys, pad = scripted_inputs(document)
     except (KeySpecError, PadSpecError) as error:
         raise BadInput(str(error)) from None
     if args.gui:
@@ -167,11 +172,11 @@ def command_run(args) -> int:
         attach_keyboard(simulation.world, keys)
     if pad is not None:
         attach_gamepad(simulation.world, pad)
-    seconds = args.seconds
-    if args.ticks is None and seconds is None:
-        seconds = document.settings.get("duration")
+    evaluator = CheckEvaluator(document)
+    seconds = run_seconds(document, evaluator, args.ticks, args.seconds)
     progress = _Progress(simulation, sys.stdout.isatty())
-    after_tick, closers = [], []   # per-tick hooks (trace, video) and what to close when the run ends
+    after_tick, closers = [], []   # per-tick hooks (checks, trace, video) and what to close when the run ends
+    after_tick.append(lambda: evaluator.on_tick(simulation))
     try:
         if args.trace:
             tracer = _open_trace(args.trace, simulation, args.graph)
@@ -194,17 +199,30 @@ def command_run(args) -> int:
         progress(count, limit)
 
     started = time.perf_counter()
+    verdict = ScenarioResult(args.graph, len(evaluator))
     try:
         result = simulation.run(ticks=args.ticks, seconds=seconds, progress=on_tick)
+        verdict.failures.extend(str(failure) for failure in evaluator.finish(simulation, result))
+        verdict.ticks, verdict.time = result.ticks, result.time
     except KeyboardInterrupt:
         progress.finish()
         print("graphflow: interrupted", file=sys.stderr)
         return EXIT_RUNTIME
+    except GraphRuntimeError as error:
+        if args.log_level == "debug":
+            raise
+        verdict.failures.append(f"graphflow: run-time error: {error}")
+        verdict.ticks, verdict.time = simulation.instance.tick_count, simulation.world.time
     finally:
         for close in closers:
             close()
         simulation.close()
     progress.finish()
+    for line in verdict.failures:
+        print(line, file=sys.stderr)
+    print(f"graphflow: {verdict.summary()}", file=sys.stderr)
+    if verdict.failures:
+        return EXIT_RUNTIME
     wall = time.perf_counter() - started
     reason = "graph finished" if result.stopped_by_graph else "limit reached"
     logging.getLogger("graphflow").info("%s: %d ticks, %.3f s simulated in %.2f s wall (%s)",
@@ -406,7 +424,7 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("graph", help="graph JSON file")
     run.add_argument("--ticks", type=_positive_int, help="stop after N ticks")
     run.add_argument("--seconds", type=_positive_float, help="stop after S simulated seconds")
-    run.add_argument("--seed", type=int, default=0, help="seed for random number generators (default 0)")
+    run.add_argument("--seed", type=int, help="seed for random number generators (default: the graph's scenario seed, else 0)")
     run.add_argument("--gui", action="store_true", help="open the PyBullet window (paced to real time, see --speed)")
     run.add_argument("--speed", type=float, default=1.0, metavar="X",
                      help="with --gui: run at X times real time (default 1; 0 = as fast as possible)")

@@ -104,6 +104,8 @@ class GraphDocument:
     ui: Mapping[str, Any] = field(default_factory=dict)
     format_version: tuple[int, int] = FORMAT_VERSION
     source: str = "<graph>"   # the file it came from, for messages and relative stage paths
+    checks: tuple[Mapping[str, Any], ...] = ()   # what must be true of a run (graphflow.checks, docs/checks.md)
+    scenario: Mapping[str, Any] = field(default_factory=dict)   # scripted inputs of a checked run (keys, gamepad)
 
     def node(self, name: str) -> NodeDoc | None:
         return next((n for n in self.nodes if n.name == name), None)
@@ -125,6 +127,10 @@ class GraphDocument:
             data["connections"] = [{"src": c.src, "dst": c.dst} for c in self.connections]
         if self.ui:
             data["ui"] = dict(self.ui)
+        if self.checks:
+            data["checks"] = [dict(check) for check in self.checks]
+        if self.scenario:
+            data["scenario"] = dict(self.scenario)
         return data
 
 
@@ -195,6 +201,8 @@ def parse_document(data: Any, source: str = "<graph>", registry: Registry | None
         ui=_frozen(data.get("ui", {})),
         format_version=tuple(data["formatVersion"]),
         source=source,
+        checks=tuple(_frozen(check) for check in data.get("checks", [])),
+        scenario=_frozen(data.get("scenario", {})),
     )
     problems = validate(document, registry)
     if problems:

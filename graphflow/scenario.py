@@ -1,0 +1,142 @@
+"""Scenarios: one checked, headless run of a graph with a verdict (``graphflow test``, the pytest plugin).
+
+A scenario is a graph document with a ``checks`` section; its ``scenario``
+section may script the keyboard and gamepad. ``run_scenario`` runs it the way
+``graphflow run GRAPH`` does (same seed, same inputs, same limit), so a
+scenario's verdict and its re-run command always agree.
+"""
+from __future__ import annotations
+
+import random
+import shlex
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from .checks import CheckEvaluator
+from .document import GraphDocument, load_document
+from .executor import GraphRuntimeError
+
+
+@dataclass
+class ScenarioResult:
+    """The verdict of one run: passed, the failure lines, how long it ran, what it printed."""
+
+    path: str
+    checks: int
+    failures: list[str] = field(default_factory=list)
+    ticks: int = 0
+    time: float = 0.0
+    output: list[str] = field(default_factory=list)
+    trace: str | None = None
+
+    @property
+    def passed(self) -> bool:
+        return not self.failures
+
+    def summary(self) -> str:
+        """One line: PASS or FAIL, the file, what held or failed, ticks and simulated time."""
+        ran = f"({self.ticks} tick{'s' if self.ticks != 1 else ''}, {self.time:.3f} s simulated)"
+        if self.passed:
+            held = f"{self.checks} check{'s' if self.checks != 1 else ''} hold" if self.checks else "no checks"
+            return f"PASS {self.path}: {held} {ran}"
+        return f"FAIL {self.path}: {len(self.failures)} failure{'s' if len(self.failures) != 1 else ''} {ran}"
+
+
+def scripted_inputs(document: GraphDocument):
+    """The keyboard and gamepad sources the document's ``scenario`` section scripts (None where it names none).
+
+    Raises ``KeySpecError`` / ``PadSpecError`` for timelines that cannot be read.
+    """
+    from .gamepad import scripted_pad
+    from .keyboard import scripted_keys
+
+    scenario = document.scenario
+    sources = []
+    for name, make in (("keys", scripted_keys), ("gamepad", scripted_pad)):
+        value = scenario.get(name)
+        if value is None:
+            sources.append(None)
+        elif isinstance(value, str):
+            sources.append(make(str(document.base_dir / value)))
+        else:
+            sources.append(make(None, list(value)))
+    return tuple(sources)
+
+
+def run_seconds(document: GraphDocument, evaluator: CheckEvaluator, ticks: int | None, seconds: float | None):
+    """The run's time limit: the one given, else the graph's duration, capped by a stopsBy check."""
+    if ticks is not None or seconds is not None:
+        return seconds
+    seconds = document.settings.get("duration")
+    stop_by = evaluator.time_limit()
+    if stop_by is not None and (seconds is None or seconds > stop_by):
+        seconds = stop_by
+    return seconds
+
+
+def seed_everything(seed: int) -> None:
+    """Seed Python's and (when a graph imports it) numpy's generators, as ``graphflow run --seed`` does."""
+    from .cli import _seed_numpy
+
+    random.seed(seed)
+    _seed_numpy(seed)
+
+
+def rerun_command(path: str, trace: str | None = None) -> str:
+    """The shell command that repeats a scenario's run (with its trace)."""
+    words = ["graphflow", "run", path] + (["--trace", trace] if trace else [])
+    return " ".join(shlex.quote(word) for word in words)
+
+
+def run_scenario(path: str | Path, *, trace: str | Path | None = None) -> ScenarioResult:
+    """Run the graph at *path* headless with its scenario inputs and evaluate its checks.
+
+    Bad input (a graph that does not load, a missing stage or key file) raises
+    ``GraphError`` / ``ValueError`` / ``OSError``; a run-time failure (an Assert,
+    a failing node) is a failed result naming the node, tick and time.
+    """
+    from .keyboard import attach_keyboard
+    from .gamepad import attach_gamepad
+    from .runtime import Simulation
+
+    path = str(path)
+    document = load_document(path)
+    seed_everything(int(document.scenario.get("seed", 0)))
+    keys, pad = scripted_inputs(document)
+    evaluator = CheckEvaluator(document)
+    result = ScenarioResult(path, len(evaluator))
+    simulation = Simulation(document, on_log=lambda event: result.output.append(
+        event.message if event.level not in ("warning", "warn", "error") else f"{event.level.upper()}: {event.node}: {event.message}"))
+    closers = []
+    try:
+        if keys is not None:
+            attach_keyboard(simulation.world, keys)
+        if pad is not None:
+            attach_gamepad(simulation.world, pad)
+        hooks = [lambda: evaluator.on_tick(simulation)]
+        if trace is not None:
+            from .trace import TraceRecorder
+
+            stream = open(trace, "w", encoding="utf-8", newline="\n")
+            closers.append(stream.close)
+            hooks.append(TraceRecorder(simulation, stream, graph=path).record_tick)
+            result.trace = str(trace)
+
+        def after_tick(_count, _limit):
+            for hook in hooks:
+                hook()
+
+        try:
+            run = simulation.run(seconds=run_seconds(document, evaluator, None, None), progress=after_tick)
+        except GraphRuntimeError as error:
+            result.failures.append(f"{path}: run-time failure: {error}")
+            result.ticks, result.time = simulation.instance.tick_count, simulation.world.time
+            return result
+        result.ticks, result.time = run.ticks, run.time
+        result.failures.extend(str(failure) for failure in evaluator.finish(simulation, run))
+        return result
+    finally:
+        for close in closers:
+            close()
+        simulation.close()
+
