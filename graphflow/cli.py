@@ -330,6 +330,15 @@ def command_plot(args) -> int:
     return EXIT_OK
 
 
+def command_test(args) -> int:
+    from .suite import NoScenarios, command_test as run_tests
+
+    try:
+        return run_tests(args)
+    except (NoScenarios, FileExistsError) as error:
+        raise BadInput(str(error)) from None
+
+
 def command_validate(args) -> int:
     failed = False
     for path in args.graphs:
@@ -458,6 +467,14 @@ def build_parser() -> argparse.ArgumentParser:
     trace_diff.add_argument("left", metavar="A", help="trace file")
     trace_diff.add_argument("right", metavar="B", help="trace file")
     trace_diff.set_defaults(handler=command_trace_diff)
+
+    test = commands.add_parser("test", help="run every graph with checks under the paths; one line each, then 'N passed, M failed'")
+    test.add_argument("paths", nargs="+", metavar="PATH", help="graph files or folders (searched recursively)")
+    test.add_argument("-j", "--jobs", type=_positive_int, metavar="N", help="processes at once (default: as many as cores)")
+    test.add_argument("--junit", metavar="FILE", help="write a JUnit XML report")
+    test.add_argument("--traces", metavar="DIR", help="folder for failing scenarios' traces (default: a new temporary folder)")
+    test.add_argument("--force", action="store_true", help="overwrite an existing --junit file")
+    test.set_defaults(handler=command_test)
 
     validate = commands.add_parser("validate", help="check graph files; print every problem")
     validate.add_argument("graphs", nargs="+", metavar="GRAPH")

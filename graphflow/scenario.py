@@ -28,15 +28,39 @@ class ScenarioResult:
     time: float = 0.0
     output: list[str] = field(default_factory=list)
     trace: str | None = None
+    expect_failure: tuple[str, ...] = ()   # the scenario section's expectFailure texts
+
+    @property
+    def run_passed(self) -> bool:
+        """Every check held and nothing failed: ``graphflow run`` exits 0."""
+        return not self.failures
 
     @property
     def passed(self) -> bool:
-        return not self.failures
+        """The scenario's verdict: the run passed, or it failed as its expectFailure says."""
+        if not self.expect_failure:
+            return self.run_passed
+        return not self.run_passed and not self.missing_failures()
+
+    def missing_failures(self) -> list[str]:
+        text = "\n".join(self.failures)
+        return [expected for expected in self.expect_failure if expected not in text]
+
+    def verdict_line(self) -> str:
+        """``graphflow test``'s line: PASS, XFAIL (failed as expected) or FAIL."""
+        if not self.expect_failure:
+            return self.summary()
+        ran = self.summary().rsplit(" (", 1)[1]
+        if self.passed:
+            return f"XFAIL {self.path}: failed as expected ({ran}"
+        if self.run_passed:
+            return f"FAIL {self.path}: expected to fail ({', '.join(map(repr, self.expect_failure))}) but passed ({ran}"
+        return f"FAIL {self.path}: failed, but not with {', '.join(map(repr, self.missing_failures()))} ({ran}"
 
     def summary(self) -> str:
         """One line: PASS or FAIL, the file, what held or failed, ticks and simulated time."""
         ran = f"({self.ticks} tick{'s' if self.ticks != 1 else ''}, {self.time:.3f} s simulated)"
-        if self.passed:
+        if self.run_passed:
             held = f"{self.checks} check{'s' if self.checks != 1 else ''} hold" if self.checks else "no checks"
             return f"PASS {self.path}: {held} {ran}"
         return f"FAIL {self.path}: {len(self.failures)} failure{'s' if len(self.failures) != 1 else ''} {ran}"
@@ -82,10 +106,9 @@ def seed_everything(seed: int) -> None:
     _seed_numpy(seed)
 
 
-def rerun_command(path: str, trace: str | None = None) -> str:
-    """The shell command that repeats a scenario's run (with its trace)."""
-    words = ["graphflow", "run", path] + (["--trace", trace] if trace else [])
-    return " ".join(shlex.quote(word) for word in words)
+def rerun_command(path: str) -> str:
+    """The shell command that repeats a scenario's run (add --trace FILE to record it again)."""
+    return " ".join(shlex.quote(word) for word in ("graphflow", "run", path))
 
 
 def run_scenario(path: str | Path, *, trace: str | Path | None = None) -> ScenarioResult:
@@ -104,7 +127,7 @@ def run_scenario(path: str | Path, *, trace: str | Path | None = None) -> Scenar
     seed_everything(int(document.scenario.get("seed", 0)))
     keys, pad = scripted_inputs(document)
     evaluator = CheckEvaluator(document)
-    result = ScenarioResult(path, len(evaluator))
+    result = ScenarioResult(path, len(evaluator), expect_failure=tuple(document.scenario.get("expectFailure", ())))
     simulation = Simulation(document, on_log=lambda event: result.output.append(
         event.message if event.level not in ("warning", "warn", "error") else f"{event.level.upper()}: {event.node}: {event.message}"))
     closers = []
