@@ -33,6 +33,7 @@ class Panel:
     kind: str
     series: dict[str, tuple[list[float], list]] = field(default_factory=dict)
     categories: list[str] = field(default_factory=list)
+    labels: list[tuple[float, str, str]] = field(default_factory=list)   # (time, series, text) written on the plot
 
 
 @dataclass
@@ -46,7 +47,9 @@ class Timeline:
     def describe(self) -> dict:
         """Series names and point counts per panel, plus notes: embedded in the PNG metadata."""
         return {"panels": [{"title": p.title, "series": {name: len(xs) for name, (xs, _) in p.series.items()},
-                            **({"categories": p.categories} if p.categories else {})} for p in self.panels],
+                            **({"categories": p.categories} if p.categories else {}),
+                            **({"labels": [[t, text] for t, _, text in p.labels]} if p.labels else {})}
+                           for p in self.panels],
                 "notes": self.notes}
 
 
@@ -75,6 +78,8 @@ def timeline(trace: Trace) -> Timeline:
         force = Panel("force on the gripper's attachments", "force (N)", "value")
         for path in grippers:
             status.series[path] = _unzip(trace.gripper_series(path, "status"))
+            # why a close failed or a grip ended, written where it happened
+            status.labels += [(t, path, reason) for t, reason in trace.gripper_series(path, "reason") if reason]
             height.series[path] = _unzip(trace.gripper_series(path, "heldZ"))
             force.series[path] = _unzip(trace.gripper_series(path, "force"))
         panels.append(status)
@@ -155,6 +160,13 @@ def _draw_panel(axes, panel: Panel, end_time: float) -> None:
             axes.step(times, levels, where="post", linewidth=1.8, label=name)
         else:
             axes.plot(times, [math.nan if v is None else v for v in values], linewidth=1.4, label=name)
+    for t, name, text in panel.labels:
+        values = panel.series[name][1]
+        times = panel.series[name][0]
+        value = next((v for when, v in zip(reversed(times), reversed(values)) if when <= t), None)
+        level = panel.categories.index(value) if value in panel.categories else 0
+        axes.annotate(text if len(text) <= 90 else text[:87] + "...", (t, level), xytext=(3, 6),
+                      textcoords="offset points", fontsize=6.5, color="#b91c1c", rotation=0, clip_on=True)
     if panel.kind == "category":
         axes.set_yticks(range(len(panel.categories)), panel.categories)
         axes.set_ylim(-0.5, len(panel.categories) - 0.5)

@@ -19,6 +19,9 @@ AXIS_NAMES = ("transX", "transY", "transZ", "rotX", "rotY", "rotZ")
 SETTLING_DELAY = 10          # physics steps before force checks after an attach or break (m_settlingDelay)
 SELF_HIT_STEP = 0.001        # m the ray origin advances past the gripper's own body
 SELF_HIT_MAX_STEPS = 1000    # give up after 1 m of self hits (Isaac loops without bound)
+PROBE_RANGE = 1.0            # m searched beyond the reach to name the nearest surface when a close fails
+PROBE_RESOLUTION = 0.0005    # m: the nearest hit's distance is found to this precision
+REASON_POINTS_LISTED = 3     # attachment points named in a close-failure reason; the rest are counted
 
 
 class GripperStatus(IntEnum):
@@ -123,11 +126,15 @@ class SurfaceGripperComponent:
     retry_elapsed: float = 0.0
     retry_active: bool = False
     events: GripEvents = field(default_factory=GripEvents)
+    reason: str = ""       # why the last close failed or the last grip ended ('' since a close began)
 
     def __post_init__(self):
         self.inactive: set[int] = set(range(len(self.points)))
         self.active: dict[int, str] = {}        # index -> gripped object path
         self.handles: dict[int, Any] = {}        # index -> executed attachment handle
+        # joint path -> (reach, nearest hit (prim, m) or None) of its first empty ray since the close began,
+        # or None when it saw only the gripper's own body: where the arm was when the close was commanded
+        self.misses: dict[str, tuple | None] = {}
 
     # -- commands (setGripperStatus) --
 
@@ -135,10 +142,14 @@ class SurfaceGripperComponent:
         if requested == self.status:
             return True
         if requested == GripperStatus.OPEN:
+            held = sorted(set(self.active.values()))
+            self.reason = (f"released {', '.join(held)} by Open" if held else "close cancelled by Open")
             self.update_open()
             self._set(GripperStatus.OPEN)
             self.retry_active = False
         elif requested == GripperStatus.CLOSED and self.status != GripperStatus.CLOSING:
+            self.reason = ""
+            self.misses.clear()
             self._set(GripperStatus.CLOSING)
             self.retry_active = True
             self.update_closed()
@@ -220,6 +231,9 @@ class SurfaceGripperComponent:
             length = self.properties.max_grip_distance - clearance
             hit = self.backend.raycast(origin, direction, length if length > 0 else 0.001)
             if hit is None:
+                if point.joint_path not in self.misses:
+                    reach = length if length > 0 else 0.001
+                    self.misses[point.joint_path] = (reach, self._nearest_hit(origin, direction, reach))
                 return None
             if self.backend.same_body(hit, point.body0_path):
                 clearance += SELF_HIT_STEP
@@ -229,6 +243,7 @@ class SurfaceGripperComponent:
                 if self.on_clearance_change is not None:
                     self.on_clearance_change(point)
             return hit
+        self.misses.setdefault(point.joint_path, None)   # nothing but the gripper's own body for 1 m
         return None
 
     def check_force_limits(self) -> None:
@@ -249,10 +264,17 @@ class SurfaceGripperComponent:
             direction = point.frame_direction(self.backend.attachment_frame(point))
             coaxial = sum(force[i] * direction[i] for i in range(3))
             shear_squared = sum((force[i] - direction[i] * coaxial) ** 2 for i in range(3))
-            if (coaxial_limit > 0 and coaxial > coaxial_limit) or (
-                    shear_limit > 0 and shear_squared > shear_limit * shear_limit) or (
-                    force_limit > 0 and _norm(self.backend.force_on_gripper(handle, False)) > force_limit) or (
-                    torque_limit > 0 and _norm(self.backend.torque_on_gripper(handle)) > torque_limit):
+            broken = None
+            if coaxial_limit > 0 and coaxial > coaxial_limit:
+                broken = f"coaxial force {coaxial:.1f} N > limit {coaxial_limit:g} N"
+            elif shear_limit > 0 and shear_squared > shear_limit * shear_limit:
+                broken = f"shear force {math.sqrt(shear_squared):.1f} N > limit {shear_limit:g} N"
+            elif force_limit > 0 and (total := _norm(self.backend.force_on_gripper(handle, False))) > force_limit:
+                broken = f"force {total:.1f} N > limit {force_limit:g} N"
+            elif torque_limit > 0 and (torque := _norm(self.backend.torque_on_gripper(handle))) > torque_limit:
+                broken = f"torque {torque:.1f} N m > limit {torque_limit:g} N m"
+            if broken is not None:
+                self.reason = f"grip on {self.active[index]} broken by {broken} at {point.joint_path}"
                 self.queue(("detach", self, index))
                 del self.active[index]
                 self.inactive.add(index)
@@ -279,14 +301,53 @@ class SurfaceGripperComponent:
         self.status = GripperStatus.OPEN
         self.retry_active = False
         self.retry_elapsed = 0.0
+        self.reason = ""
+        self.misses.clear()
         for point in self.points:
             point.settle = 0
 
     def _set(self, status: GripperStatus) -> None:
         if status != self.status:
+            if status == GripperStatus.OPEN and not self.reason:
+                self.reason = self._close_failure()
             self.status = status
             if self.on_status_change is not None:
                 self.on_status_change(self)
+
+
+    def _close_failure(self) -> str:
+        """Why a close ended Open without a command or a force break: the retry window and every empty ray."""
+        retry = self.properties.retry_interval
+        prefix = f"close failed: retry interval {retry:g} s elapsed" if retry > 0 else "close failed"
+        missed = [self.points[i].joint_path for i in sorted(self.inactive) if self.points[i].joint_path in self.misses]
+        if not missed:
+            return prefix
+        details = []
+        for joint_path in missed[:REASON_POINTS_LISTED]:
+            miss = self.misses[joint_path]
+            if miss is None:
+                details.append(f"{joint_path}: only the gripper's own body within {SELF_HIT_STEP * SELF_HIT_MAX_STEPS:g} m")
+                continue
+            reach, nearest = miss
+            seen = (f"nearest hit {nearest[0]} at {nearest[1]:.4f} m" if nearest is not None
+                    else f"nothing within {PROBE_RANGE:g} m")
+            details.append(f"{joint_path}: no surface within {reach:.4f} m ({seen})")
+        more = len(missed) - REASON_POINTS_LISTED
+        return f"{prefix}; " + "; ".join(details) + (f"; and {more} more attachment points" if more > 0 else "")
+
+    def _nearest_hit(self, origin, direction, reach: float) -> tuple[str, float] | None:
+        """What the ray would hit beyond its reach and how far along it: (prim, m), found by bisection
+        on the backend's raycast (which names the body hit, not the distance)."""
+        if self.backend.raycast(origin, direction, PROBE_RANGE) is None:
+            return None
+        near, far = reach, PROBE_RANGE
+        while far - near > PROBE_RESOLUTION:
+            middle = 0.5 * (near + far)
+            if self.backend.raycast(origin, direction, middle) is None:
+                near = middle
+            else:
+                far = middle
+        return self.backend.raycast(origin, direction, far), far
 
 
 def _norm(vector) -> float:
