@@ -84,27 +84,28 @@ class _Check:
         self.spec = spec
         self.label = spec.get("name") or self.describe()
         self.index = index
-        self.measured_at_time: str | None = None   # set when a timed check took its measurement
+        self.measured = False                       # a timed check took its measurement
+        self.measurement: str | None = None         # what it measured then (None: it held)
 
     def describe(self) -> str:
         raise NotImplementedError
 
     def due(self, time: float, time_step: float) -> bool:
         """A timed check measures on the first tick at or after its time."""
-        return self.at != END and self.measured_at_time is None and time >= float(self.at) - time_step / 2
+        return self.at != END and not self.measured and time >= float(self.at) - time_step / 2
 
     def tick(self, world, instance) -> None:
         if self.due(world.time, world.time_step):
-            self.measured_at_time = self.measure(world)
+            self.measured, self.measurement = True, self.measure(world)
 
     def verdict(self, world, result) -> tuple[str, str] | None:
         """(measured, expected) when the check failed."""
         if self.at == END:
             measured = self.measure(world)
-        elif self.measured_at_time is None:
+        elif not self.measured:
             return f"the run ended at t = {result.time:.3f} s", f"{self.expectation()} {_when(self.at)}"
         else:
-            measured = self.measured_at_time
+            measured = self.measurement
         return None if measured is None else (measured, f"{self.expectation()} {_when(self.at)}")
 
     def measure(self, world) -> str | None:
@@ -316,8 +317,9 @@ class CheckEvaluator:
     """Evaluates a document's checks over one run: ``on_tick(simulation)`` every tick, then ``finish(result)``."""
 
     def __init__(self, document):
-        self.source = document.source
-        self.checks = build_checks(document.checks)
+        """*document* None: a run whose checks do not apply (an evaluator with no checks)."""
+        self.source = document.source if document is not None else "<graph>"
+        self.checks = build_checks(document.checks if document is not None else ())
         self.failures: list[CheckFailure] | None = None
 
     def __len__(self) -> int:

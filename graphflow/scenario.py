@@ -61,7 +61,7 @@ class ScenarioResult:
         """One line: PASS or FAIL, the file, what held or failed, ticks and simulated time."""
         ran = f"({self.ticks} tick{'s' if self.ticks != 1 else ''}, {self.time:.3f} s simulated)"
         if self.run_passed:
-            held = f"{self.checks} check{'s' if self.checks != 1 else ''} hold" if self.checks else "no checks"
+            held = (f"{self.checks} checks hold" if self.checks > 1 else "1 check holds") if self.checks else "no checks"
             return f"PASS {self.path}: {held} {ran}"
         return f"FAIL {self.path}: {len(self.failures)} failure{'s' if len(self.failures) != 1 else ''} {ran}"
 

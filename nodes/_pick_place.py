@@ -22,6 +22,7 @@ DONE = PHASE_COUNT
 EVENT_NAMES = ("move_above_pick", "descend", "settle", "gripper_close", "lift", "move_to_place",
                "descend_to_place", "gripper_open", "lift_after_place", "hold_above_place", "done")
 CLOSE_EVENT, OPEN_EVENT, SETTLE_EVENT = 3, 7, 2
+LIFT_EVENT = 4               # lift: the grip may still begin (a retried close), then must hold
 CARRY_EVENTS = (5, 6)        # move_to_place, descend_to_place: the object must be held throughout
 LAST_EVENT = 9               # hold_above_place: when it ends, the object rests where it was put
 DEFAULT_PLACE_TOLERANCE = 0.02
@@ -288,11 +289,11 @@ def _judge(db, routine, before, goal):
         return
     event = before[-1]
     wanted, place = goal
-    if event in CARRY_EVENTS:
+    if event == LIFT_EVENT or event in CARRY_EVENTS:
         gripped, status, reason = _gripper_view(db)
         if verdict.carried is None:
             held = wanted if wanted in gripped else (gripped[0] if gripped and wanted is None else None)
-            if held is None:
+            if held is None and event in CARRY_EVENTS:   # the lift may still see a retried close grip
                 why = reason or f"status {status}"
                 return _fail(db, verdict, f"the gripper never closed on {wanted or 'an object'}: {why}")
             verdict.carried = held

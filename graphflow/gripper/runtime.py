@@ -143,7 +143,10 @@ class SurfaceGripperComponent:
             return True
         if requested == GripperStatus.OPEN:
             held = sorted(set(self.active.values()))
-            self.reason = (f"released {', '.join(held)} by Open" if held else "close cancelled by Open")
+            if held:
+                self.reason = f"released {', '.join(held)} by Open"
+            elif not self.reason:   # a force break or failed close already says why nothing is held
+                self.reason = "close cancelled by Open"
             self.update_open()
             self._set(GripperStatus.OPEN)
             self.retry_active = False
