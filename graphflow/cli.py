@@ -353,15 +353,22 @@ def command_test(args) -> int:
 
 
 def command_validate(args) -> int:
+    from .deep_validate import deep_validate
+
     failed = False
     for path in args.graphs:
         try:
-            load_document(path)
-            print(f"{path}: ok")
+            errors, warnings = deep_validate(load_document(path))
         except GraphError as error:
+            errors, warnings = error.problems, []
+        for problem in warnings:
+            print(f"warning: {problem}", file=sys.stderr)
+        for problem in errors:
+            print(problem, file=sys.stderr)
+        if errors:
             failed = True
-            for problem in error.problems:
-                print(problem, file=sys.stderr)
+        else:
+            print(f"{path}: ok")
     return EXIT_BAD_INPUT if failed else EXIT_OK
 
 
@@ -492,7 +499,8 @@ def build_parser() -> argparse.ArgumentParser:
     test.add_argument("--force", action="store_true", help="overwrite an existing --junit file")
     test.set_defaults(handler=command_test)
 
-    validate = commands.add_parser("validate", help="check graph files; print every problem")
+    validate = commands.add_parser(
+        "validate", help="check graph files and the stages they name without running them; print every problem")
     validate.add_argument("graphs", nargs="+", metavar="GRAPH")
     validate.set_defaults(handler=command_validate)
 

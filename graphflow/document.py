@@ -6,6 +6,7 @@ a file at once, each as one line naming the file, node and attribute.
 """
 from __future__ import annotations
 
+import difflib
 import json
 import os
 import tempfile
@@ -290,7 +291,9 @@ def _node_problems(source: str, node: NodeDoc, node_type: NodeType) -> list[Prob
         qualified = f"inputs:{name}"
         attribute = spec.attribute(qualified)
         if attribute is None:
-            problems.append(Problem(source, f"{spec.id} has no such input", node=node.name, attribute=qualified))
+            close = difflib.get_close_matches(name, [a.name for a in spec.inputs], n=1)
+            hint = f" (did you mean {close[0]!r}?)" if close else ""
+            problems.append(Problem(source, f"{spec.id} has no such input{hint}", node=node.name, attribute=qualified))
             continue
         if attribute.is_execution:
             problems.append(Problem(source, "execution inputs take connections, not values", node=node.name, attribute=qualified))
