@@ -20,8 +20,9 @@ SETTLING_DELAY = 10          # physics steps before force checks after an attach
 SELF_HIT_STEP = 0.001        # m the ray origin advances past the gripper's own body
 SELF_HIT_MAX_STEPS = 1000    # give up after 1 m of self hits (Isaac loops without bound)
 PROBE_RANGE = 1.0            # m searched beyond the reach to name the nearest surface when a close fails
-PROBE_RESOLUTION = 0.0005    # m: the nearest hit's distance is found to this precision
+PROBE_RESOLUTION = 0.0001    # m: the nearest hit's distance is found to this precision
 REASON_POINTS_LISTED = 3     # attachment points named in a close-failure reason; the rest are counted
+SETTLING = "settling"        # a close-failure note: the point did not cast, it was settling after its last grip
 
 
 class GripperStatus(IntEnum):
@@ -212,6 +213,7 @@ class SurfaceGripperComponent:
             point = self.points[index]
             if point.settle > 0:
                 point.settle -= 1
+                self.misses.setdefault(point.joint_path, SETTLING)
                 continue
             frame = self.backend.attachment_frame(point)
             if frame is None:
@@ -234,7 +236,7 @@ class SurfaceGripperComponent:
             length = self.properties.max_grip_distance - clearance
             hit = self.backend.raycast(origin, direction, length if length > 0 else 0.001)
             if hit is None:
-                if point.joint_path not in self.misses:
+                if self.misses.get(point.joint_path, SETTLING) == SETTLING:   # first real miss of this close
                     reach = length if length > 0 else 0.001
                     self.misses[point.joint_path] = (reach, self._nearest_hit(origin, direction, reach))
                 return None
@@ -328,6 +330,9 @@ class SurfaceGripperComponent:
         details = []
         for joint_path in missed[:REASON_POINTS_LISTED]:
             miss = self.misses[joint_path]
+            if miss == SETTLING:
+                details.append(f"{joint_path}: still settling after its last grip ({SETTLING_DELAY} physics steps)")
+                continue
             if miss is None:
                 details.append(f"{joint_path}: only the gripper's own body within {SELF_HIT_STEP * SELF_HIT_MAX_STEPS:g} m")
                 continue
