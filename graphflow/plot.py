@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import math
+import textwrap
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -22,6 +23,7 @@ NO_PHASE = "(none)"             # a controller's phase name before its first pha
 FIGURE_WIDTH = 10.0            # inches
 PANEL_HEIGHT = 1.6             # inches per value panel
 ACTIVITY_ROW_HEIGHT = 0.2      # inches per node in the exec-pulse panel
+REASON_LINES = 2               # lines of a gripper's reason written on the status panel
 
 
 @dataclass
@@ -79,7 +81,9 @@ def timeline(trace: Trace) -> Timeline:
         for path in grippers:
             status.series[path] = _unzip(trace.gripper_series(path, "status"))
             # why a close failed or a grip ended, written where it happened
-            status.labels += [(t, path, reason) for t, reason in trace.gripper_series(path, "reason") if reason]
+            reasons = trace.gripper_series(path, "reason")
+            status.labels += [(t, path, reason) for i, (t, reason) in enumerate(reasons)
+                              if reason and (i == 0 or reasons[i - 1][1] != reason)]
             height.series[path] = _unzip(trace.gripper_series(path, "heldZ"))
             force.series[path] = _unzip(trace.gripper_series(path, "force"))
         panels.append(status)
@@ -165,8 +169,10 @@ def _draw_panel(axes, panel: Panel, end_time: float) -> None:
         times = panel.series[name][0]
         value = next((v for when, v in zip(reversed(times), reversed(values)) if when <= t), None)
         level = panel.categories.index(value) if value in panel.categories else 0
-        axes.annotate(text if len(text) <= 90 else text[:87] + "...", (t, level), xytext=(3, 6),
-                      textcoords="offset points", fontsize=6.5, color="#b91c1c", rotation=0, clip_on=True)
+        lines = textwrap.wrap(text, 100)
+        shown = "\n".join(lines[:REASON_LINES]) + (" ..." if len(lines) > REASON_LINES else "")
+        axes.annotate(shown, (t, level), xytext=(3, 5), textcoords="offset points", fontsize=6.5, color="#b91c1c",
+                      va="bottom")
     if panel.kind == "category":
         axes.set_yticks(range(len(panel.categories)), panel.categories)
         axes.set_ylim(-0.5, len(panel.categories) - 0.5)
