@@ -47,10 +47,14 @@ class ScenarioFailed(Exception):
 
 class ScenarioItem(pytest.Item):
     def runtest(self):
+        from .document import GraphError
         from .scenario import rerun_command, run_scenario
 
         trace = Path(tempfile.mkdtemp(prefix="graphflow-scenario-")) / f"{self.path.stem}.jsonl"
-        result = run_scenario(self.path, trace=trace)
+        try:
+            result = run_scenario(self.path, trace=trace)
+        except (GraphError, ValueError, OSError) as error:   # bad input: the graph, stage or key file
+            raise ScenarioFailed(*str(error).splitlines()) from None
         if result.passed:
             trace.unlink()
             trace.parent.rmdir()

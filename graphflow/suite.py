@@ -8,6 +8,7 @@ one testcase per scenario) through a temporary file and a rename.
 from __future__ import annotations
 
 import json
+import logging
 import os
 import shutil
 import tempfile
@@ -84,6 +85,7 @@ def run_one(path: str, trace: str) -> Outcome:
     """Worker: run one scenario with a trace; the trace is deleted when the scenario passes."""
     from .document import GraphError
 
+    logging.getLogger("graphflow").setLevel(logging.ERROR)   # the graph's lines go to the report, not stderr
     started = time.perf_counter()
     try:
         result = run_scenario(path, trace=trace)
