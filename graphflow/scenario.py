@@ -60,9 +60,10 @@ class ScenarioResult:
     def summary(self) -> str:
         """One line: PASS or FAIL, the file, what held or failed, ticks and simulated time."""
         ran = f"({self.ticks} tick{'s' if self.ticks != 1 else ''}, {self.time:.3f} s simulated)"
+        if self.run_passed and not self.checks:
+            return f"done {self.path}: no checks {ran}"
         if self.run_passed:
-            held = (f"{self.checks} checks hold" if self.checks > 1 else "1 check holds") if self.checks else "no checks"
-            return f"PASS {self.path}: {held} {ran}"
+            return f"PASS {self.path}: {f'{self.checks} checks hold' if self.checks > 1 else '1 check holds'} {ran}"
         return f"FAIL {self.path}: {len(self.failures)} failure{'s' if len(self.failures) != 1 else ''} {ran}"
 
 
@@ -149,8 +150,11 @@ def run_scenario(path: str | Path, *, trace: str | Path | None = None) -> Scenar
             for hook in hooks:
                 hook()
 
+        seconds = run_seconds(document, evaluator, None, None)
+        if seconds is None:   # a scenario must end by itself: nothing hangs
+            raise ValueError("no run limit: give settings.duration or a stopsBy check")
         try:
-            run = simulation.run(seconds=run_seconds(document, evaluator, None, None), progress=after_tick)
+            run = simulation.run(seconds=seconds, progress=after_tick)
         except GraphRuntimeError as error:
             result.failures.append(f"{path}: run-time failure: {error}")
             result.ticks, result.time = simulation.instance.tick_count, simulation.world.time

@@ -92,7 +92,7 @@ def run_one(path: str, trace: str) -> Outcome:
     except GraphError as error:
         return Outcome(path, None, error=str(error).splitlines()[0], wall=time.perf_counter() - started)
     except (ValueError, OSError) as error:
-        return Outcome(path, None, error=f"{type(error).__name__}: {error}", wall=time.perf_counter() - started)
+        return Outcome(path, None, error=str(error), wall=time.perf_counter() - started)
     outcome = Outcome(path, result, wall=time.perf_counter() - started, trace=trace, output=result.output)
     if result.passed:
         os.unlink(trace)
