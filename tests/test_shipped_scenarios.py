@@ -33,6 +33,8 @@ def test_the_pick_that_misses_exits_1_with_the_grippers_reason_in_checks_trace_a
     gripper = "/World/ur10/ee_link/SurfaceGripper"
     reasons = {reason for _, reason in read_trace(trace).gripper_series(gripper, "reason") if reason}
     assert len(reasons) == 1 and next(iter(reasons)).startswith("close failed: retry interval 1 s elapsed")
+    node_reasons = {value for _, value in read_trace(trace).series("gripper.reason") if value}   # the node's output
+    assert node_reasons == reasons
     status_panel = next(p for p in timeline(read_trace(trace)).panels if p.title == "gripper status")
     assert [text for _, _, text in status_panel.labels] == list(reasons)
 
