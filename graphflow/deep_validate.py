@@ -119,14 +119,24 @@ class _Stage:
         if prim is None:
             close = difflib.get_close_matches(path, [str(p.GetPath()) for p in self.usd.Traverse()], n=1)
             return f"no prim {path} on the stage" + (f" (did you mean {close[0]}?)" if close else "")
+        referenced = next((p for p in self._lineage(prim) if p.HasAuthoredReferences() or p.HasAuthoredPayloads()), None)
+        note = (f" ({referenced.GetPath()} takes its content from a reference or payload: does that file open?)"
+                if referenced is not None else "")
         if kind == SURFACE_GRIPPER and path not in self.grippers and prim.GetTypeName() != "IsaacSurfaceGripper":
             hint = f" (surface grippers on the stage: {', '.join(sorted(self.grippers))})" if self.grippers else ""
-            return f"{path} is a {prim.GetTypeName() or 'typeless'} prim, not a surface gripper{hint}"
+            return f"{path} is a {prim.GetTypeName() or 'typeless'} prim, not a surface gripper{hint or note}"
         if kind == ARTICULATION and self.articulation(path) is None:
-            return f"{path} is not part of an articulation"
+            return f"{path} is not part of an articulation{note}"
         if kind == RIGID_BODY and path not in self.bodies:
-            return f"{path} is not a rigid body"
+            return f"{path} is not a rigid body{note}"
         return None
+
+    @staticmethod
+    def _lineage(prim):
+        """The prim and its ancestors up to the root."""
+        while prim.IsValid() and not prim.IsPseudoRoot():
+            yield prim
+            prim = prim.GetParent()
 
 
 def _open(document: GraphDocument, reference: str):

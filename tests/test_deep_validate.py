@@ -111,3 +111,16 @@ def test_an_unknown_input_name_gets_did_you_mean(tmp_path):
     assert result.returncode == 2
     assert result.stderr.strip() == (f"{path}: node 'pick_place' input 'inputs:placingPositon': graphflow.PickPlaceController "
                                      "has no such input (did you mean 'placingPosition'?)")
+
+
+def test_a_robot_from_a_reference_that_does_not_open_is_named_as_the_likely_cause(tmp_path):
+    (tmp_path / "scene.usda").write_text('#usda 1.0\n\ndef Xform "robot" (\n    prepend references = @robot_missing.usda@\n)\n{\n}\n')
+    graph = {"format": "graphflow", "formatVersion": [1, 0], "settings": {"stage": "scene.usda"},
+             "nodes": [{"name": "tick", "type": "omni.graph.action.OnTick"},
+                       {"name": "arm", "type": "isaacsim.core.nodes.IsaacArticulationController",
+                        "inputs": {"targetPrim": "/robot"}}],
+             "connections": [{"src": "tick.outputs:tick", "dst": "arm.inputs:execIn"}]}
+    path = tmp_path / "graph.json"
+    path.write_text(json.dumps(graph))
+    assert _problems(path) == ([f"{path}: node 'arm' input 'inputs:targetPrim': /robot is not part of an articulation "
+                                "(/robot takes its content from a reference or payload: does that file open?)"], [])
