@@ -6,6 +6,7 @@ collection starts when the ini option ``graphflow_scenarios = true`` is set
 given. Then every ``*.json`` graph with a ``checks`` section that pytest visits
 (for example a folder listed in ``testpaths``) becomes one item. A failure
 shows the failed checks, the kept trace and the command that re-runs it.
+Items carry the marker ``graphflow_scenario`` (``-m 'not graphflow_scenario'`` skips them).
 Registered through the ``pytest11`` entry point ``graphflow``.
 """
 from __future__ import annotations
@@ -20,6 +21,11 @@ def pytest_addoption(parser):
     parser.addini("graphflow_scenarios", "collect graph files with checks as test items", type="bool", default=False)
     parser.addoption("--graphflow-scenarios", action="store_true", default=False,
                      help="collect graph files with checks (graphflow scenarios) as test items")
+
+
+def pytest_configure(config):
+    config.addinivalue_line("markers", "graphflow_scenario: a graph with checks run as a test item "
+                                       "(deselect with -m 'not graphflow_scenario')")
 
 
 def _enabled(config) -> bool:
@@ -46,6 +52,10 @@ class ScenarioFailed(Exception):
 
 
 class ScenarioItem(pytest.Item):
+    def __init__(self, **kwargs):
+        super().__init__(**kwargs)
+        self.add_marker("graphflow_scenario")
+
     def runtest(self):
         from .document import GraphError
         from .scenario import rerun_command, run_scenario
