@@ -42,7 +42,15 @@ PRIM_KINDS = {
     ("graphflow.LegacySurfaceGripper", "endEffectorPrim"): RIGID_BODY,
 }
 ATTRIBUTE_NODES = ("omni.graph.nodes.ReadPrimAttribute", "omni.graph.nodes.WritePrimAttribute")
-WORLD_BODY_ATTRIBUTES = ("physics:mass",)   # the world gives every rigid body a mass, authored or not
+# Attributes the world reads or writes whether or not the stage authors them (graphflow.physics.world.ATTRIBUTES,
+# named here so validation never loads the physics engine; a test keeps the two in step)
+WORLD_BODY_ATTRIBUTES = ("xformOp:translate", "xformOp:orient", "physics:mass", "physics:velocity",
+                         "physics:angularVelocity")
+WORLD_JOINT_ATTRIBUTES = ("drive:linear:physics:targetPosition", "drive:angular:physics:targetPosition",
+                          "drive:linear:physics:targetVelocity", "drive:angular:physics:targetVelocity",
+                          "state:linear:physics:position", "state:angular:physics:position",
+                          "state:linear:physics:velocity", "state:angular:physics:velocity",
+                          "physics:lowerLimit", "physics:upperLimit")
 LEGACY_GRIPPER = "graphflow.LegacySurfaceGripper"
 _USD_LOCATION = re.compile(r"(?P<file>[^\s'(]+):(?P<line>\d+):(?P<column>\d+): (?P<message>.*)")
 
@@ -208,7 +216,8 @@ def _attribute_problems(document, stage, node) -> list[Problem]:
     name = node.inputs.get("name")
     path = node.inputs.get("primPath") if node.inputs.get("usePath") else next(iter(_paths(node.inputs.get("prim", ()))), None)
     prim = stage.prim(path) if path and name else None
-    if prim is None or prim.HasAttribute(name) or (name in WORLD_BODY_ATTRIBUTES and path in stage.bodies):
+    if prim is None or prim.HasAttribute(name) or (name in WORLD_BODY_ATTRIBUTES and path in stage.bodies) or (
+            name in WORLD_JOINT_ATTRIBUTES and path in stage.description.joints):
         return []
     close = difflib.get_close_matches(name, prim.GetPropertyNames(), n=1)
     hint = f" (did you mean {close[0]!r}?)" if close else ""

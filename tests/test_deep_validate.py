@@ -124,3 +124,10 @@ def test_a_robot_from_a_reference_that_does_not_open_is_named_as_the_likely_caus
     path.write_text(json.dumps(graph))
     assert _problems(path) == ([f"{path}: node 'arm' input 'inputs:targetPrim': /robot is not part of an articulation "
                                 "(/robot takes its content from a reference or payload: does that file open?)"], [])
+
+
+def test_the_attributes_validation_accepts_are_the_worlds():
+    from graphflow.deep_validate import WORLD_BODY_ATTRIBUTES, WORLD_JOINT_ATTRIBUTES
+    from graphflow.physics import ATTRIBUTES
+
+    assert sorted(WORLD_BODY_ATTRIBUTES + WORLD_JOINT_ATTRIBUTES) == sorted(ATTRIBUTES)
