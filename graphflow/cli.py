@@ -10,7 +10,6 @@ from __future__ import annotations
 import argparse
 import json
 import logging
-import random
 import sys
 import time
 from pathlib import Path
@@ -21,6 +20,7 @@ from .executor import GraphRuntimeError, LogEvent
 from .gamepad import PadSpecError, attach_gamepad, scripted_pad
 from .keyboard import KeySpecError, attach_keyboard, scripted_keys
 from .registry import default_registry
+from .seeding import seed_everything
 
 EXIT_OK, EXIT_RUNTIME, EXIT_BAD_INPUT = 0, 1, 2
 EXIT_TRACES_DIFFER = 1   # graphflow trace diff, like diff(1)
@@ -106,58 +106,21 @@ def _load(path: str):
         raise BadInput(str(error)) from None
 
 
-class _SeedNumpyOnImport:
-    """Seeds numpy's global generator right after ``numpy.random`` is first imported.
-
-    ``--seed`` must seed numpy for graphs that use it, but importing numpy only
-    to seed it costs a core-node graph a good part of its start-up time. A
-    meta-path finder that wraps the real loader makes the seeding happen when
-    (and only if) something imports ``numpy.random``: no code can draw from it
-    before the seed.
-    """
-
-    def __init__(self, seed: int):
-        self.seed = seed
-
-    def find_spec(self, fullname, path=None, target=None):
-        if fullname != "numpy.random":
-            return None
-        sys.meta_path.remove(self)
-        import importlib.util
-
-        spec = importlib.util.find_spec(fullname)
-        if spec is not None and spec.loader is not None:
-            exec_module, seed = spec.loader.exec_module, self.seed
-
-            def exec_and_seed(module):
-                exec_module(module)
-                module.seed(seed)
-
-            spec.loader.exec_module = exec_and_seed
-        return spec
-
-
-def _seed_numpy(seed: int) -> None:
-    random_module = sys.modules.get("numpy.random")
-    if random_module is not None:
-        random_module.seed(seed)
-    elif not any(isinstance(finder, _SeedNumpyOnImport) for finder in sys.meta_path):
-        sys.meta_path.insert(0, _SeedNumpyOnImport(seed))
-    else:
-        next(f for f in sys.meta_path if isinstance(f, _SeedNumpyOnImport)).seed = seed
-
-
 def command_run(args) -> int:
+    from .checks import CheckEvaluator
     from .runtime import Simulation
+    from .scenario import ScenarioResult, run_seconds, scripted_inputs
 
     document = _load(args.graph)
-    random.seed(args.seed)
-    _seed_numpy(args.seed)
+    seed = args.seed if args.seed is not None else int(document.scenario.get("seed", 0))
+    seed_everything(seed)
     if args.record:
         _check_recording(args, document)
     try:
         keys = scripted_keys(args.keys, args.key)
         pad = scripted_pad(args.gamepad, args.pad)
+        if not args.gui and keys is None and pad is None:   # the graph's own scripted inputs (its scenario)
+            keys, pad = scripted_inputs(document)
         topics = _ros2_run().check_options(args.topics, args.topic, args.record_topics)
     except (KeySpecError, PadSpecError, *_ros2_run().RunOptionError) as error:
         raise BadInput(str(error)) from None
@@ -174,9 +137,10 @@ def command_run(args) -> int:
     if pad is not None:
         attach_gamepad(simulation.world, pad)
     topic_recording = _ros2_run().attach_topics(simulation.world, topics, args.record_topics)
-    seconds = args.seconds
-    if args.ticks is None and seconds is None:
-        seconds = document.settings.get("duration")
+    changed = _scenario_changes(args)
+    evaluator = CheckEvaluator(document if args.checks or not changed else None)
+    seconds = run_seconds(document, evaluator, args.ticks, args.seconds)
+    simulation.add_listener(evaluator)
     trace_stream = video = None   # ours to close (with the topic recording); per-tick jobs are listeners or services
     try:
         if args.trace:
@@ -194,11 +158,19 @@ def command_run(args) -> int:
                                       simulation.tick_limit(ticks=args.ticks, seconds=seconds)))
 
     started = time.perf_counter()
+    verdict = ScenarioResult(args.graph, len(evaluator))
     try:
         result = simulation.run(ticks=args.ticks, seconds=seconds)
+        verdict.failures.extend(str(failure) for failure in evaluator.finish(simulation, result))
+        verdict.ticks, verdict.time = result.ticks, result.time
     except KeyboardInterrupt:
         print("graphflow: interrupted", file=sys.stderr)
         return EXIT_RUNTIME
+    except GraphRuntimeError as error:
+        if args.log_level == "debug":
+            raise
+        verdict.failures.append(f"graphflow: run-time error: {error}")
+        verdict.ticks, verdict.time = simulation.instance.tick_count, simulation.world.time
     finally:
         if trace_stream is not None:
             trace_stream.close()
@@ -207,6 +179,15 @@ def command_run(args) -> int:
         if video is not None:
             video.close()
         simulation.close()
+    for line in verdict.failures:
+        print(line, file=sys.stderr)
+    summary = verdict.summary()
+    if document.checks and not len(evaluator) and not verdict.failures:
+        summary = (f"done {args.graph}: checks not evaluated, {', '.join(changed)} changed the run "
+                   f"(--checks evaluates them) {summary[summary.rindex('('):]}")
+    print(f"graphflow: {summary}", file=sys.stderr)
+    if verdict.failures:
+        return EXIT_RUNTIME
     wall = time.perf_counter() - started
     reason = "graph finished" if result.stopped_by_graph else "limit reached"
     logging.getLogger("graphflow").info("%s: %d ticks, %.3f s simulated in %.2f s wall (%s)",
@@ -219,6 +200,14 @@ def _ros2_run():
     from .ros2 import run
 
     return run
+
+
+def _scenario_changes(args) -> list[str]:
+    """The options that make this run differ from the graph's scenario, so its checks do not apply."""
+    options = {"--ticks": args.ticks is not None, "--seconds": args.seconds is not None, "--keys": args.keys is not None,
+               "--key": bool(args.key), "--gamepad": args.gamepad is not None, "--pad": bool(args.pad),
+               "--gui": args.gui}
+    return [name for name, given in options.items() if given]
 
 
 def _check_recording(args, document) -> None:
@@ -323,16 +312,32 @@ def command_plot(args) -> int:
     return EXIT_OK
 
 
+def command_test(args) -> int:
+    from .suite import NoScenarios, command_test as run_tests
+
+    try:
+        return run_tests(args)
+    except (NoScenarios, FileExistsError) as error:
+        raise BadInput(str(error)) from None
+
+
 def command_validate(args) -> int:
+    from .deep_validate import deep_validate
+
     failed = False
     for path in args.graphs:
         try:
-            load_document(path)
-            print(f"{path}: ok")
+            errors, warnings = deep_validate(load_document(path))
         except GraphError as error:
+            errors, warnings = error.problems, []
+        for problem in warnings:
+            print(f"warning: {problem}", file=sys.stderr)
+        for problem in errors:
+            print(problem, file=sys.stderr)
+        if errors:
             failed = True
-            for problem in error.problems:
-                print(problem, file=sys.stderr)
+        else:
+            print(f"{path}: ok")
     return EXIT_BAD_INPUT if failed else EXIT_OK
 
 
@@ -437,7 +442,7 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("graph", help="graph JSON file")
     run.add_argument("--ticks", type=_positive_int, help="stop after N ticks")
     run.add_argument("--seconds", type=_positive_float, help="stop after S simulated seconds")
-    run.add_argument("--seed", type=int, default=0, help="seed for random number generators (default 0)")
+    run.add_argument("--seed", type=int, help="seed for random number generators (default: the graph's scenario seed, else 0)")
     run.add_argument("--gui", action="store_true", help="open the PyBullet window (paced to real time, see --speed)")
     run.add_argument("--speed", type=float, default=1.0, metavar="X",
                      help="with --gui: run at X times real time (default 1; 0 = as fast as possible)")
@@ -459,6 +464,9 @@ def build_parser() -> argparse.ArgumentParser:
                      help='scripted ROS 2 message (repeatable): \'/cmd_vel@1.0={"linear": {"x": 0.5}}\'')
     run.add_argument("--record-topics", metavar="FILE.mcap",
                      help="write every message ROS 2 publisher nodes publish to an MCAP file (ROS 2 CDR encoding)")
+    run.add_argument("--checks", action="store_true",
+                     help="evaluate the graph's checks even when --ticks, --seconds, --key(s), --gamepad, --pad or --gui "
+                          "change the run (by default they are evaluated only for the run as written)")
     run.add_argument("--log-level", default="warning", choices=["debug", "info", "warning", "error"],
                      help="Python logging level on stderr (default warning)")
     run.add_argument("--trace", metavar="FILE", help="write what happens every tick as JSON Lines (docs/trace.md)")
@@ -479,7 +487,16 @@ def build_parser() -> argparse.ArgumentParser:
     trace_diff.add_argument("right", metavar="B", help="trace file")
     trace_diff.set_defaults(handler=command_trace_diff)
 
-    validate = commands.add_parser("validate", help="check graph files; print every problem")
+    test = commands.add_parser("test", help="run every graph with checks under the paths; one line each, then 'N passed, M failed'")
+    test.add_argument("paths", nargs="+", metavar="PATH", help="graph files or folders (searched recursively)")
+    test.add_argument("-j", "--jobs", type=_positive_int, metavar="N", help="processes at once (default: as many as cores)")
+    test.add_argument("--junit", metavar="FILE", help="write a JUnit XML report")
+    test.add_argument("--traces", metavar="DIR", help="folder for failing scenarios' traces (default: a new temporary folder)")
+    test.add_argument("--force", action="store_true", help="overwrite an existing --junit file")
+    test.set_defaults(handler=command_test)
+
+    validate = commands.add_parser(
+        "validate", help="check graph files and the stages they name without running them; print every problem")
     validate.add_argument("graphs", nargs="+", metavar="GRAPH")
     validate.set_defaults(handler=command_validate)
 

@@ -14,6 +14,7 @@ document shares that one immutable compiled graph (benchmarks/instances.py).
 """
 from __future__ import annotations
 
+import difflib
 from typing import Any
 
 import networkx as nx
@@ -96,7 +97,9 @@ class _Compilation:
             qualified = f"inputs:{name}"
             attribute = spec.attribute(qualified)
             if attribute is None:
-                self._problem(f"{spec.id} has no such input", node=node.name, attribute=qualified)
+                close = difflib.get_close_matches(name, [a.name for a in spec.inputs], n=1)
+                hint = f" (did you mean {close[0]!r}?)" if close else ""
+                self._problem(f"{spec.id} has no such input{hint}", node=node.name, attribute=qualified)
                 continue
             if attribute.is_execution:
                 self._problem("execution inputs take connections, not values", node=node.name, attribute=qualified)

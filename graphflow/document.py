@@ -68,6 +68,8 @@ def parse_document(data: Any, source: str = "<graph>", registry: Registry | None
         ui=_frozen(data.get("ui", {})),
         format_version=tuple(data["formatVersion"]),
         source=source,
+        checks=tuple(_frozen(check) for check in data.get("checks", [])),
+        scenario=_frozen(data.get("scenario", {})),
     )
     from .compiler import compile   # checking a document is compiling it (the compiler imports this module)
 

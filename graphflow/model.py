@@ -93,6 +93,8 @@ class GraphDocument:
     ui: Mapping[str, Any] = field(default_factory=dict)
     format_version: tuple[int, int] = FORMAT_VERSION
     source: str = "<graph>"   # the file it came from, for messages and relative stage paths
+    checks: tuple[Mapping[str, Any], ...] = ()   # what must be true of a run (graphflow.checks, docs/checks.md)
+    scenario: Mapping[str, Any] = field(default_factory=dict)   # scripted inputs of a checked run (keys, gamepad)
     # its compiled graph per registry id, kept by graphflow.compiler.compile (derived, not part of the definition)
     _compiled: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
@@ -116,6 +118,10 @@ class GraphDocument:
             data["connections"] = [{"src": c.src, "dst": c.dst} for c in self.connections]
         if self.ui:
             data["ui"] = dict(self.ui)
+        if self.checks:
+            data["checks"] = [dict(check) for check in self.checks]
+        if self.scenario:
+            data["scenario"] = dict(self.scenario)
         return data
 
 

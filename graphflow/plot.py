@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import math
+import textwrap
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -22,6 +23,7 @@ NO_PHASE = "(none)"             # a controller's phase name before its first pha
 FIGURE_WIDTH = 10.0            # inches
 PANEL_HEIGHT = 1.6             # inches per value panel
 ACTIVITY_ROW_HEIGHT = 0.2      # inches per node in the exec-pulse panel
+REASON_LINES = 2               # lines of a gripper's reason written on the status panel
 
 
 @dataclass
@@ -33,6 +35,7 @@ class Panel:
     kind: str
     series: dict[str, tuple[list[float], list]] = field(default_factory=dict)
     categories: list[str] = field(default_factory=list)
+    labels: list[tuple[float, str, str]] = field(default_factory=list)   # (time, series, text) written on the plot
 
 
 @dataclass
@@ -46,7 +49,9 @@ class Timeline:
     def describe(self) -> dict:
         """Series names and point counts per panel, plus notes: embedded in the PNG metadata."""
         return {"panels": [{"title": p.title, "series": {name: len(xs) for name, (xs, _) in p.series.items()},
-                            **({"categories": p.categories} if p.categories else {})} for p in self.panels],
+                            **({"categories": p.categories} if p.categories else {}),
+                            **({"labels": [[t, text] for t, _, text in p.labels]} if p.labels else {})}
+                           for p in self.panels],
                 "notes": self.notes}
 
 
@@ -75,6 +80,10 @@ def timeline(trace: Trace) -> Timeline:
         force = Panel("force on the gripper's attachments", "force (N)", "value")
         for path in grippers:
             status.series[path] = _unzip(trace.gripper_series(path, "status"))
+            # why a close failed or a grip ended, written where it happened
+            reasons = trace.gripper_series(path, "reason")
+            status.labels += [(t, path, reason) for i, (t, reason) in enumerate(reasons)
+                              if reason and (i == 0 or reasons[i - 1][1] != reason)]
             height.series[path] = _unzip(trace.gripper_series(path, "heldZ"))
             force.series[path] = _unzip(trace.gripper_series(path, "force"))
         panels.append(status)
@@ -155,6 +164,15 @@ def _draw_panel(axes, panel: Panel, end_time: float) -> None:
             axes.step(times, levels, where="post", linewidth=1.8, label=name)
         else:
             axes.plot(times, [math.nan if v is None else v for v in values], linewidth=1.4, label=name)
+    for t, name, text in panel.labels:
+        values = panel.series[name][1]
+        times = panel.series[name][0]
+        value = next((v for when, v in zip(reversed(times), reversed(values)) if when <= t), None)
+        level = panel.categories.index(value) if value in panel.categories else 0
+        lines = textwrap.wrap(text, 100)
+        shown = "\n".join(lines[:REASON_LINES]) + (" ..." if len(lines) > REASON_LINES else "")
+        axes.annotate(shown, (t, level), xytext=(3, 5), textcoords="offset points", fontsize=6.5, color="#b91c1c",
+                      va="bottom")
     if panel.kind == "category":
         axes.set_yticks(range(len(panel.categories)), panel.categories)
         axes.set_ylim(-0.5, len(panel.categories) - 0.5)

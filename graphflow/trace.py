@@ -87,15 +87,17 @@ def published_topics(world) -> list[dict]:
 
 @dataclass(frozen=True)
 class GripperSample:
-    """One gripper as seen after a tick: status, gripped objects, holding force, held height."""
+    """One gripper as seen after a tick: status, gripped objects, holding force, held height, reason."""
 
     status: str
     gripped: tuple[str, ...]
     force: float | None
     held_z: float | None
+    reason: str = ""      # why the last close failed or grip ended (SurfaceGripperComponent.reason)
 
     def fields(self) -> dict:
-        return {"status": self.status, "gripped": list(self.gripped), "force": self.force, "heldZ": self.held_z}
+        return {"status": self.status, "gripped": list(self.gripped), "force": self.force, "heldZ": self.held_z,
+                "reason": self.reason}
 
 
 def sample_grippers(world) -> dict[str, GripperSample]:
@@ -111,7 +113,8 @@ def sample_grippers(world) -> dict[str, GripperSample]:
             status=getattr(status, "token", str(status)),
             gripped=gripped,
             force=_holding_force(manager, path) if gripped else None,
-            held_z=float(world.prim_pose(gripped[0])[0][2]) if gripped else None)
+            held_z=float(world.prim_pose(gripped[0])[0][2]) if gripped else None,
+            reason=manager.component(path).reason)
     return samples
 
 

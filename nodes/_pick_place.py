@@ -23,6 +23,10 @@ DONE = PHASE_COUNT
 EVENT_NAMES = ("move_above_pick", "descend", "settle", "gripper_close", "lift", "move_to_place",
                "descend_to_place", "gripper_open", "lift_after_place", "hold_above_place", "done")
 CLOSE_EVENT, OPEN_EVENT, SETTLE_EVENT = 3, 7, 2
+LIFT_EVENT = 4               # lift: the grip may still begin (a retried close), then must hold
+CARRY_EVENTS = (5, 6)        # move_to_place, descend_to_place: the object must be held throughout
+LAST_EVENT = 9               # hold_above_place: when it ends, the object rests where it was put
+DEFAULT_PLACE_TOLERANCE = 0.02
 DEFAULT_INITIAL_HEIGHT = 0.3
 # graphflow.kinematics.SUCTION_DOWN (ee_link +X, the suction axis, pointing down), written out so that loading
 # the node registry does not load the IK solver: UR10Arm imports it on first use
@@ -166,6 +170,8 @@ MOTION_INPUTS = (
     Attribute("eventsDT", "double[]", default=UR10_EVENTS_DT, description="Per-tick phase increments, exactly 10 values"),
     Attribute("endEffectorInitialHeight", "double", default=DEFAULT_INITIAL_HEIGHT,
               description="Travel height h1 of the tip (m)"),
+    Attribute("placeTolerance", "double", default=DEFAULT_PLACE_TOLERANCE, minimum=0.0,
+              description="Largest horizontal distance (m) of a placed object from its target for 'success'"),
 )
 COMMON_OUTPUTS = (
     Attribute("execOut", "execution", description="Fires on every tick the controller advanced"),
@@ -175,6 +181,12 @@ COMMON_OUTPUTS = (
     Attribute("eventName", "token", allowed_tokens=EVENT_NAMES, description="Name of the current phase"),
     Attribute("isDone", "bool", description="True once the routine is complete"),
     Attribute("jointTargets", "double[]", description="UR10 joint position targets last sent (rad)"),
+    Attribute("success", "execution",
+              description="Fires once, when the last object was placed within placeTolerance and nothing failed"),
+    Attribute("failed", "execution",
+              description="Fires once, when the routine first goes wrong: the gripper never closed on the object, "
+                          "the object dropped while carried, or it was placed farther than placeTolerance"),
+    Attribute("reason", "string", description="What succeeded or failed, with the gripper's reason or the distance"),
 )
 COMMON_STATE = (
     Attribute("running", "bool", default=False, description="Started and not yet finished"),
@@ -193,6 +205,8 @@ def run_controller(db, make_routine):
     if routine is None or db.inputs.reset == ExecState.ENABLED:
         routine = db.internal["routine"] = make_routine(db)
         db.internal["reported"] = None
+        db.internal["verdict"] = Verdict()
+        db.outputs.reason = ""
         db.state.paused = False
     if db.inputs.pause == ExecState.ENABLED:
         db.state.paused = True
@@ -203,7 +217,11 @@ def run_controller(db, make_routine):
         db.outputs.finished = ExecState.LATENT_PUSH
     if db.state.running and not db.state.paused and db.frame != db.state.lastFrame:
         db.state.lastFrame = db.frame
+        before = routine.marker
+        goal = None if routine.done else routine.goal(db)
         _advance(db, routine)
+        if goal is not None:
+            _judge(db, routine, before, goal)
     reported = db.internal["reported"] or routine.marker
     db.outputs.event = reported[-1]
     db.outputs.eventName = EVENT_NAMES[reported[-1]]
@@ -243,6 +261,66 @@ def _advance(db, routine):
         if not commanded:
             db.error(f"inputs:gripperPrim: no surface gripper at {gripper}")
     db.outputs.jointTargets = arm.solution
+
+
+class Verdict:
+    """How the routine is going: the object being carried, the placements so far, whether it failed."""
+
+    def __init__(self):
+        self.carried: str | None = None
+        self.placed: list[str] = []
+        self.failed = False
+
+
+def _gripper_view(db):
+    """(gripped objects, status token, reason) of the controller's gripper."""
+    manager = gripper_manager(db.world)
+    path = db.inputs.gripperPrim[0]
+    status = manager.get_gripper_status(path)
+    return (tuple(manager.get_gripped_objects(path)), getattr(status, "token", str(status)),
+            getattr(manager.component(path), "reason", ""))
+
+
+def _judge(db, routine, before, goal):
+    """After an advance: check the phase that just ran; fire failed once, or success after the last placement.
+
+    *before* is the routine's marker before the advance (its last entry the phase that ran), *goal* the
+    (object or None for 'whatever is held', place position) of the pick that ran.
+    """
+    verdict = db.internal["verdict"]
+    if verdict.failed:
+        return
+    event = before[-1]
+    wanted, place = goal
+    if event == LIFT_EVENT or event in CARRY_EVENTS:
+        gripped, status, reason = _gripper_view(db)
+        if verdict.carried is None:
+            held = wanted if wanted in gripped else (gripped[0] if gripped and wanted is None else None)
+            if held is None and event in CARRY_EVENTS:   # the lift may still see a retried close grip
+                why = reason or f"status {status}"
+                return _fail(db, verdict, f"the gripper never closed on {wanted or 'an object'}: {why}")
+            verdict.carried = held
+        elif verdict.carried not in gripped:
+            why = reason or f"gripper {status}"
+            return _fail(db, verdict, f"{verdict.carried} dropped during {EVENT_NAMES[event]} at t = {db.time:.3f} s: {why}")
+    if event == LAST_EVENT and routine.marker != before and verdict.carried is not None:
+        obj = verdict.carried
+        verdict.carried = None
+        position = db.world.prim_pose(obj)[0]
+        distance = math.hypot(position[0] - place[0], position[1] - place[1])
+        placed = f"placed {obj} {distance * 1000:.1f} mm from the target"
+        if distance > db.inputs.placeTolerance:
+            return _fail(db, verdict, f"{placed} (tolerance {db.inputs.placeTolerance * 1000:.1f} mm)")
+        verdict.placed.append(placed)
+        db.outputs.reason = "; ".join(verdict.placed)
+        if routine.done:
+            db.outputs.success = ExecState.ENABLED
+
+
+def _fail(db, verdict, reason: str) -> None:
+    verdict.failed = True
+    db.outputs.reason = reason
+    db.outputs.failed = ExecState.ENABLED
 
 
 def new_run(db) -> PickPlaceRun:

@@ -24,7 +24,10 @@ SPEC = NodeSpec(
         "execIn starts it (finished goes latent); it then advances every tick until done, when "
         "'finished' fires once. The pick xy and height are latched while phases 0 and 1 run. "
         "pause/resume hold and continue; reset restarts from phase 0 (a finished controller "
-        "then waits for execIn)."),
+        "then waits for execIn). 'failed' fires once with a reason when the gripper never closed on "
+        "the object (with the gripper's reason), the object dropped while carried, or it landed "
+        "farther than placeTolerance (horizontally) from placingPosition; 'success' fires when it "
+        "landed within it."),
     categories=("isaacExamples", "robot"),
     ui_name="Pick and Place Controller",
     inputs=COMMON_INPUTS + (
@@ -51,6 +54,10 @@ class _PickPlace:
     @property
     def marker(self):
         return (self.run.event,)
+
+    def goal(self, db):
+        """Whatever the gripper picks, to placingPosition."""
+        return None, db.inputs.placingPosition
 
     def step(self, db):
         return self.run.step(db.inputs.pickingPosition, db.inputs.placingPosition, db.inputs.endEffectorOffset)

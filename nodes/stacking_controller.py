@@ -18,7 +18,9 @@ SPEC = NodeSpec(
         "picked at its current position and placed centred at stackPosition + (0, 0, i * "
         "cubeHeight), each with PickPlaceController's ten phases (same inputs and timing). "
         "phaseStarted fires at every phase of every cube; 'finished' fires once after the "
-        "last cube. cubeIndex is the cube being handled (the cube count when done)."),
+        "last cube. cubeIndex is the cube being handled (the cube count when done). 'failed' fires "
+        "once with a reason when a cube was not gripped, dropped, or landed farther than "
+        "placeTolerance from its place; 'success' when every cube landed within it."),
     categories=("isaacExamples", "robot"),
     ui_name="Stacking Controller",
     inputs=COMMON_INPUTS + (
@@ -50,6 +52,11 @@ class _Stacking:
     @property
     def marker(self):
         return (self.index, DONE if self.done else self.run.event)
+
+    def goal(self, db):
+        """Cube *index*, to its place in the stack."""
+        base = db.inputs.stackPosition
+        return self.cubes[self.index], (base[0], base[1], base[2] + self.index * db.inputs.cubeHeight)
 
     def step(self, db):
         picking = db.world.prim_pose(self.cubes[self.index])[0]

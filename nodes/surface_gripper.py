@@ -12,7 +12,8 @@ command) and ``broken`` (a grip ended by a force limit) fire on the compute
 that first sees the change, comparing with what the node saw on its previous
 compute. To see them on the tick they happen, compute the node every tick:
 connect a tick (``OnPlaybackTick.tick``) to ``execIn``, which refreshes the
-outputs without commanding the gripper.
+outputs without commanding the gripper. ``reason`` says why a close failed or a
+grip ended (the gripper records it where its status changes).
 """
 from graphflow.spec import Attribute, NodeSpec
 from graphflow.types import ExecState
@@ -42,6 +43,10 @@ SPEC = NodeSpec(
                   description="Gripper status after this compute's command"),
         Attribute("isClosed", "bool", description="Status is Closed: every attachment point holds something"),
         Attribute("grippedObjects", "token[]", description="Prim paths of the held objects, sorted"),
+        Attribute("reason", "string",
+                  description="Why the last close failed or the last grip ended ('' since a close began): no "
+                              "surface within reach per attachment point with the nearest hit, retry interval "
+                              "elapsed, broken by a force (measured > limit), released by Open"),
         Attribute("execOut", "execution", description="Fires after every enabled compute"),
         Attribute("gripped", "execution", description="Fires when an object has become held since the last compute"),
         Attribute("released", "execution", description="Fires when an open command let go of a held object"),
@@ -91,4 +96,5 @@ def compute(db):
     db.outputs.status = component.status.token
     db.outputs.isClosed = component.status.token == "Closed"
     db.outputs.grippedObjects = gripped
+    db.outputs.reason = component.reason
     db.outputs.execOut = ExecState.ENABLED

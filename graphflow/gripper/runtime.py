@@ -20,6 +20,9 @@ from graphflow.world import AXIS_NAMES, AxisCompliance, World
 SETTLING_DELAY = 10          # physics steps before force checks after an attach or break (m_settlingDelay)
 SELF_HIT_STEP = 0.001        # m the ray origin advances past the gripper's own body
 SELF_HIT_MAX_STEPS = 1000    # give up after 1 m of self hits (Isaac loops without bound)
+PROBE_RANGE = 1.0            # m searched beyond the reach to name the nearest surface when a close fails
+REASON_POINTS_LISTED = 3     # attachment points named in a close-failure reason; the rest are counted
+SETTLING = "settling"        # a close-failure note: the point did not cast, it was settling after its last grip
 
 
 class GripperStatus(IntEnum):
@@ -102,11 +105,15 @@ class SurfaceGripperComponent:
     retry_elapsed: float = 0.0
     retry_active: bool = False
     events: GripEvents = field(default_factory=GripEvents)
+    reason: str = ""       # why the last close failed or the last grip ended ('' since a close began)
 
     def __post_init__(self):
         self.inactive: set[int] = set(range(len(self.points)))
         self.active: dict[int, str] = {}        # index -> gripped object path
         self.handles: dict[int, Any] = {}        # index -> executed attachment handle
+        # joint path -> (reach, nearest hit (prim, m) or None) of its first empty ray since the close began,
+        # or None when it saw only the gripper's own body: where the arm was when the close was commanded
+        self.misses: dict[str, tuple | None] = {}
 
     # -- commands (setGripperStatus) --
 
@@ -114,10 +121,17 @@ class SurfaceGripperComponent:
         if requested == self.status:
             return True
         if requested == GripperStatus.OPEN:
+            held = sorted(set(self.active.values()))
+            if held:
+                self.reason = f"released {', '.join(held)} by Open"
+            elif not self.reason:   # a force break or failed close already says why nothing is held
+                self.reason = "close cancelled by Open"
             self.update_open()
             self._set(GripperStatus.OPEN)
             self.retry_active = False
         elif requested == GripperStatus.CLOSED and self.status != GripperStatus.CLOSING:
+            self.reason = ""
+            self.misses.clear()
             self._set(GripperStatus.CLOSING)
             self.retry_active = True
             self.update_closed()
@@ -177,6 +191,7 @@ class SurfaceGripperComponent:
             point = self.points[index]
             if point.settle > 0:
                 point.settle -= 1
+                self.misses.setdefault(point.joint_path, SETTLING)
                 continue
             frame = self.world.attachments.frame(point.body0_path, point.local_pose0)
             if frame is None:
@@ -199,6 +214,9 @@ class SurfaceGripperComponent:
             length = self.properties.max_grip_distance - clearance
             hit = self.world.raycast(origin, direction, length if length > 0 else 0.001)
             if hit is None or not hit.prim_path:
+                if self.misses.get(point.joint_path, SETTLING) == SETTLING:   # first real miss of this close
+                    reach = length if length > 0 else 0.001
+                    self.misses[point.joint_path] = (reach, self._nearest_hit(origin, direction))
                 return None
             hit = hit.prim_path
             if self.world.same_body(hit, point.body0_path):
@@ -209,6 +227,7 @@ class SurfaceGripperComponent:
                 if self.on_clearance_change is not None:
                     self.on_clearance_change(point)
             return hit
+        self.misses.setdefault(point.joint_path, None)   # nothing but the gripper's own body for 1 m
         return None
 
     def check_force_limits(self) -> None:
@@ -230,10 +249,17 @@ class SurfaceGripperComponent:
             direction = point.frame_direction(attachments.frame(point.body0_path, point.local_pose0))
             coaxial = sum(force[i] * direction[i] for i in range(3))
             shear_squared = sum((force[i] - direction[i] * coaxial) ** 2 for i in range(3))
-            if (coaxial_limit > 0 and coaxial > coaxial_limit) or (
-                    shear_limit > 0 and shear_squared > shear_limit * shear_limit) or (
-                    force_limit > 0 and _norm(attachments.force_on_gripper(handle, False)) > force_limit) or (
-                    torque_limit > 0 and _norm(attachments.torque_on_gripper(handle)) > torque_limit):
+            broken = None
+            if coaxial_limit > 0 and coaxial > coaxial_limit:
+                broken = f"coaxial force {coaxial:.1f} N > limit {coaxial_limit:g} N"
+            elif shear_limit > 0 and shear_squared > shear_limit * shear_limit:
+                broken = f"shear force {math.sqrt(shear_squared):.1f} N > limit {shear_limit:g} N"
+            elif force_limit > 0 and (total := _norm(attachments.force_on_gripper(handle, False))) > force_limit:
+                broken = f"force {total:.1f} N > limit {force_limit:g} N"
+            elif torque_limit > 0 and (torque := _norm(attachments.torque_on_gripper(handle))) > torque_limit:
+                broken = f"torque {torque:.1f} N m > limit {torque_limit:g} N m"
+            if broken is not None:
+                self.reason = f"grip on {self.active[index]} broken by {broken} at {point.joint_path}"
                 self.queue(("detach", self, index))
                 del self.active[index]
                 self.inactive.add(index)
@@ -260,14 +286,47 @@ class SurfaceGripperComponent:
         self.status = GripperStatus.OPEN
         self.retry_active = False
         self.retry_elapsed = 0.0
+        self.reason = ""
+        self.misses.clear()
         for point in self.points:
             point.settle = 0
 
     def _set(self, status: GripperStatus) -> None:
         if status != self.status:
+            if status == GripperStatus.OPEN and not self.reason:
+                self.reason = self._close_failure()
             self.status = status
             if self.on_status_change is not None:
                 self.on_status_change(self)
+
+
+    def _close_failure(self) -> str:
+        """Why a close ended Open without a command or a force break: the retry window and every empty ray."""
+        retry = self.properties.retry_interval
+        prefix = f"close failed: retry interval {retry:g} s elapsed" if retry > 0 else "close failed"
+        missed = [self.points[i].joint_path for i in sorted(self.inactive) if self.points[i].joint_path in self.misses]
+        if not missed:
+            return prefix
+        details = []
+        for joint_path in missed[:REASON_POINTS_LISTED]:
+            miss = self.misses[joint_path]
+            if miss == SETTLING:
+                details.append(f"{joint_path}: still settling after its last grip ({SETTLING_DELAY} physics steps)")
+                continue
+            if miss is None:
+                details.append(f"{joint_path}: only the gripper's own body within {SELF_HIT_STEP * SELF_HIT_MAX_STEPS:g} m")
+                continue
+            reach, nearest = miss
+            seen = (f"nearest hit {nearest[0]} at {nearest[1]:.4f} m" if nearest is not None
+                    else f"nothing within {PROBE_RANGE:g} m")
+            details.append(f"{joint_path}: no surface within {reach:.4f} m ({seen})")
+        more = len(missed) - REASON_POINTS_LISTED
+        return f"{prefix}; " + "; ".join(details) + (f"; and {more} more attachment points" if more > 0 else "")
+
+    def _nearest_hit(self, origin, direction) -> tuple[str, float] | None:
+        """What the ray would hit beyond its reach and how far along it: (prim, m), or None within PROBE_RANGE."""
+        hit = self.world.raycast(origin, direction, PROBE_RANGE)
+        return None if hit is None or not hit.prim_path else (hit.prim_path, hit.distance)
 
 
 def _norm(vector) -> float:

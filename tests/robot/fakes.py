@@ -40,6 +40,19 @@ class FakeGripperManager:
         self.grippers = set(grippers)
         self.commands: list[tuple[int, str, str]] = []
         self.status = {path: "Open" for path in grippers}
+        self.holds: dict[str, str] = {}      # gripper -> object a close grips (set by the test)
+        self.gripped: dict[str, list[str]] = {path: [] for path in grippers}
+        self.reason = ""
+
+    def get_gripper_status(self, path):
+        return self.status[path]
+
+    def get_gripped_objects(self, path):
+        return list(self.gripped[path])
+
+    def component(self, path):
+        """The real manager's component carries ``reason``; the fake itself stands in for it."""
+        return self
 
     def after_step(self, dt):
         """Commands take effect at once here; nothing to do per step."""
@@ -52,6 +65,7 @@ class FakeGripperManager:
             return False
         self.commands.append((self.world.step_index, "close", path))
         self.status[path] = "Closed"
+        self.gripped[path] = [self.holds[path]] if path in self.holds else []
         return True
 
     def open_gripper(self, path):
@@ -59,6 +73,7 @@ class FakeGripperManager:
             return False
         self.commands.append((self.world.step_index, "open", path))
         self.status[path] = "Open"
+        self.gripped[path] = []
         return True
 
 
