@@ -160,7 +160,10 @@ def command_run(args) -> int:
 
         route_native_stdout_to_stderr()
     try:
-        simulation = Simulation(document, gui=args.gui, on_log=_print_log_event)
+        from .overrides import scenario_for_run
+
+        scenario = scenario_for_run(document, args.set, args.randomize, args.seed)
+        simulation = Simulation(scenario.document, world=scenario.create_world(gui=args.gui), on_log=_print_log_event)
     except (ValueError, OSError) as error:
         raise BadInput(f"{args.graph}: {error}") from None
     if keys is not None:
@@ -421,6 +424,11 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--pad", action="append", default=[], metavar="ELEMENT=VALUE@TIME",
                      help='scripted gamepad element (repeatable), held until changed: "Left Stick X Axis=0.5@1.0", '
                           '"Face Button Bottom=1@3"; "1:..." for pad 1')
+    run.add_argument("--set", action="append", default=[], metavar="TARGET=VALUE",
+                     help="override (repeatable): NODE.INPUT=VALUE (a node input) or /Prim/Path.attribute=VALUE "
+                          "(a stage attribute, in USD units); VALUE is JSON or a plain string (docs/sweeps.md)")
+    run.add_argument("--randomize", metavar="FILE",
+                     help="draw the randomize entries of FILE (a sweep file or {\"randomize\": [...]}) from --seed")
     run.add_argument("--log-level", default="warning", choices=["debug", "info", "warning", "error"],
                      help="Python logging level on stderr (default warning)")
     run.add_argument("--trace", metavar="FILE", help="write what happens every tick as JSON Lines (docs/trace.md)")
