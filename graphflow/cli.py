@@ -487,6 +487,10 @@ def build_parser() -> argparse.ArgumentParser:
     plot.add_argument("trace", help="trace file written by graphflow run --trace")
     plot.add_argument("-o", "--output", required=True, metavar="FILE", help="image file (.png, .svg or .pdf)")
     plot.set_defaults(handler=command_plot)
+
+    from .sweep import add_sweep_parser
+
+    add_sweep_parser(commands)
     return parser
 
 
