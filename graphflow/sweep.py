@@ -491,10 +491,13 @@ class LocalPool:
             self._start_worker()
         try:
             while pending or any(w["episode"] is not None for w in self.workers):
-                for worker in self.workers:
+                for worker in list(self.workers):
                     if worker["ready"] and worker["episode"] is None and pending:
+                        try:
+                            worker["connection"].send(pending[-1])
+                        except (BrokenPipeError, OSError):
+                            continue   # it died idle; wait() reports its end next
                         worker["episode"] = pending.pop()
-                        worker["connection"].send(worker["episode"])
                 ready = wait([w["connection"] for w in self.workers])
                 for worker in [w for w in self.workers if w["connection"] in ready]:
                     try:
@@ -509,6 +512,9 @@ class LocalPool:
                         yield payload
                     else:
                         raise SweepError(f"{self.sweep.source}: a worker could not start: {payload}")
+        except BaseException:   # Ctrl-C or the consumer stopped: finished episodes are already kept
+            self.terminate()
+            raise
         finally:
             self.close()
 
@@ -524,6 +530,15 @@ class LocalPool:
             yield failed_record(worker["episode"], f"worker crashed ({_exit_reason(code)})", self.sweep.metric_names)
         if pending:
             self._start_worker()
+
+    def terminate(self) -> None:
+        """Stop every worker now, mid-episode if need be."""
+        for worker in self.workers:
+            worker["process"].terminate()
+        for worker in self.workers:
+            worker["process"].join()
+            worker["connection"].close()
+        self.workers = []
 
     def close(self) -> None:
         for worker in self.workers:
@@ -680,7 +695,7 @@ class ResultsFolder:
             (self.path / name).unlink(missing_ok=True)
         _write_atomically(manifest, json.dumps({"format": "graphflow-sweep-results", "formatVersion": [1, 0],
                                                 "source": self.sweep.source, "identity": self.sweep.identity()},
-                                               indent=2, sort_keys=True) + "\n")
+                                               indent=2) + "\n")   # key order kept: it orders grid points
         _write_atomically(self.path / EPISODES_CSV, self._csv_text([], header=True))
         return []
 
@@ -874,15 +889,16 @@ def run_sweep(path: str, *, out: str | None = None, jobs: int | None = None, ray
          + (f", {len(records)} already done, {len(todo)} to run" if resume else "") + f" on {where}; results in {folder.path}")
     bar = _Progress(len(episodes), len(records), sys.stderr.isatty() if progress is None else progress)
     interrupted = False
+    running = executor.run(todo) if todo else iter(())
     try:
-        if todo:
-            for record in executor.run(todo):
-                folder.append(record)
-                records.append(record)
-                bar.update(record)
+        for record in running:
+            folder.append(record)
+            records.append(record)
+            bar.update(record)
     except KeyboardInterrupt:
         interrupted = True
     finally:
+        running.close()
         bar.finish()
     rows = summarize(sweep, records)
     write_summary(folder, rows)
@@ -899,9 +915,7 @@ def run_sweep(path: str, *, out: str | None = None, jobs: int | None = None, ray
 
 
 def command_sweep(args) -> int:
-    """The CLI handler (``graphflow sweep SWEEP`` and ``graphflow sweep plot DIR``)."""
-    from .cli import BadInput
-
+    """The CLI handler (``graphflow sweep SWEEP`` and ``graphflow sweep plot DIR``); bad input: one line, exit 2."""
     try:
         if args.sweep == "plot":
             from .sweep_plot import plot_command
@@ -912,8 +926,9 @@ def command_sweep(args) -> int:
         return run_sweep(args.sweep, out=args.out, jobs=args.jobs, use_ray=args.ray is not None,
                          ray_address=None if args.ray in (None, "") else args.ray, resume=args.resume,
                          force=args.force)
-    except SweepError as error:
-        raise BadInput(str(error)) from None
+    except SweepError as error:   # reported as the CLI reports BadInput
+        print(f"graphflow: error: {error}", file=sys.stderr)
+        return 2
 
 
 def add_sweep_parser(commands) -> None:
