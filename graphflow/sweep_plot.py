@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from pathlib import Path
 
 from .sweep import EPISODES_JSONL, MANIFEST, Sweep, SweepError, _finite, _median, _shown, wilson_interval
@@ -91,7 +92,7 @@ def plot_command(args) -> int:
         _draw_map(figure, axes, records, x, y, args.metric)
     else:
         _draw_curve(axes, records, x, y, args.metric)
-    title = sweep.data.get("description", "").split(". ")[0] or Path(args.results).name
+    title = re.split(r"(?<=[.?!])\s", sweep.data.get("description", ""))[0] or Path(args.results).name
     figure.suptitle(title if len(title) < 90 else title[:87] + "...", fontsize=9)
     figure.tight_layout()
     try:
@@ -126,7 +127,7 @@ def _draw_map(figure, axes, records, x, y, metric):
         else:
             value = _median(sorted(r["metrics"][metric] for r in group if _finite(r["metrics"].get(metric))))
             grid[row, column] = math.nan if value is None else value
-            labels[row, column] = _shown(value)
+            labels[row, column] = f"{_shown(value)}\nn={len(group)}"
     if metric is None:
         image = axes.imshow(grid, origin="lower", cmap="RdYlGn", vmin=0.0, vmax=1.0, aspect="auto")
         figure.colorbar(image, ax=axes, label="success rate")
@@ -140,7 +141,10 @@ def _draw_map(figure, axes, records, x, y, metric):
         image = axes.imshow(grid, origin="lower", cmap="viridis_r", aspect="auto", norm=norm)
         figure.colorbar(image, ax=axes, label=f"median {metric}")
     for (row, column), text in labels.items():
-        axes.text(column, row, text, ha="center", va="center", fontsize=7, color="black")
+        value = grid[row, column]
+        red, green, blue, _alpha = image.cmap(image.norm(value)) if numpy.isfinite(value) else (1, 1, 1, 1)
+        dark = 0.299 * red + 0.587 * green + 0.114 * blue < 0.5
+        axes.text(column, row, text, ha="center", va="center", fontsize=7, color="white" if dark else "black")
     axes.set_xticks(range(len(xs)), [_shown(v) for v in xs])
     axes.set_yticks(range(len(ys)), [_shown(v) for v in ys])
     axes.set_xlabel(x)
