@@ -10,11 +10,14 @@ open the stage). ``per_process`` runs each episode as its own ``graphflow run --
 local Ray started for the purpose; its start-up is reported apart (``ray_start``) and its overhead
 is measured from its first to its last record against the pool's. Targets: 2 workers at least 1.8x
 one worker on a quiet machine; Ray at most 10 % slower than the pool. Ratio = wall(2 workers) /
-wall(1 worker) (0.5 is perfect scaling). ``--quick`` uses the core counter graph and 4 episodes.
+wall(1 worker) (0.5 is perfect scaling). On a shared machine the wall figures follow the other
+load; ``cpu_scaling`` (2 x CPU per episode on 1 worker / on 2 workers, from the joined workers'
+rusage) is what two idle cores would give. ``--quick`` uses the core counter graph and 4 episodes.
 """
 from __future__ import annotations
 
 import json
+import resource
 import subprocess
 import sys
 import tempfile
@@ -26,15 +29,21 @@ from . import GRAPHS, ROOT, Skip, line
 SWEEP = ROOT / "sweeps" / "force_limit_mass.json"
 
 
-def _timed(executor, episodes) -> tuple[float, float, list[dict]]:
-    """(wall seconds to the first record, wall seconds in all, records)."""
+def _children_cpu() -> float:
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def _timed(executor, episodes) -> tuple[float, float, list[dict], float]:
+    """(wall seconds to the first record, wall seconds in all, records, CPU seconds of the joined workers)."""
+    cpu = _children_cpu()
     started = time.perf_counter()
     first, records = None, []
     for record in executor.run(episodes):
         if first is None:
             first = time.perf_counter() - started
         records.append(record)
-    return first, time.perf_counter() - started, records
+    return first, time.perf_counter() - started, records, _children_cpu() - cpu
 
 
 def _quick_sweep(folder: Path) -> Path:
@@ -71,8 +80,8 @@ def run(quick: bool = False) -> str:
                 raise Skip(f"{SWEEP.relative_to(ROOT)} not found")
             sweep = load_sweep(str(SWEEP))
         episodes = sweep.episodes()[: 4 if quick else 16]
-        _first1, wall1, records1 = _timed(LocalPool(sweep, 1), episodes)
-        _first2, wall2, records2 = _timed(LocalPool(sweep, 2), episodes)
+        _first1, wall1, records1, cpu1 = _timed(LocalPool(sweep, 1), episodes)
+        _first2, wall2, records2, cpu2 = _timed(LocalPool(sweep, 2), episodes)
         strip = lambda rows: sorted((r["key"], json.dumps({k: v for k, v in r.items() if k != "wall"})) for r in rows)
         if strip(records1) != strip(records2):
             raise RuntimeError("1 and 2 workers gave different records")
@@ -81,17 +90,20 @@ def run(quick: bool = False) -> str:
         n = len(episodes)
         figures = {"workers1": f"{n / wall1:.2f}ep/s", "workers2": f"{n / wall2:.2f}ep/s",
                    "speedup": f"{wall1 / wall2:.2f}x", "per_process": f"{1 / per_process:.2f}ep/s",
-                   "reuse_gain": f"{per_process / (wall1 / n):.2f}x"}
+                   "reuse_gain": f"{per_process / (wall1 / n):.2f}x",
+                   "cpu_per_episode": f"{cpu1 / n:.3f}s", "cpu_scaling": f"{2 * cpu1 / cpu2:.2f}x"}
         detail = (f"sweep_scaling: {n} episodes ({'counter graph' if quick else SWEEP.name}); wall s: 1 worker "
                   f"{wall1:.2f}, 2 workers {wall2:.2f} (target speedup >= 1.8 on a quiet machine); one process per "
-                  f"episode {per_process:.2f} s each")
+                  f"episode {per_process:.2f} s each; workers' CPU s per episode (start-up included): 1 worker {cpu1 / n:.3f}, "
+                  f"2 workers {cpu2 / n:.3f}, so 2 idle cores would give {2 * cpu1 / cpu2:.2f}x (wall figures suffer "
+                  "from whatever else the machine runs; CPU figures do not)")
         try:
             import ray  # noqa: F401
         except ImportError:
             ray = None
         if ray is not None and not quick:
             first_pool, wall_pool = _first2, wall2
-            first_ray, wall_ray, records_ray = _timed(RayPool(sweep, 2, None), episodes)
+            first_ray, wall_ray, records_ray, _cpu = _timed(RayPool(sweep, 2, None), episodes)
             if strip(records_ray) != strip(records2):
                 raise RuntimeError("Ray and the pool gave different records")
             steady_ray, steady_pool = wall_ray - first_ray, wall_pool - first_pool

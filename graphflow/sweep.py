@@ -245,6 +245,9 @@ class _MetricProbe:
         self.metrics = list(metrics)
         self.force_metrics = [m for m in self.metrics if "gripForce" in m]
         self.peaks = {m["name"]: 0.0 for m in self.force_metrics}
+        self.jitter_metrics = [m for m in self.metrics if "holdJitter" in m]
+        self.jitter = {m["name"]: _Jitter() for m in self.jitter_metrics}
+        self.per_tick = bool(self.force_metrics or self.jitter_metrics)
 
     def after_tick(self, world) -> None:
         from .trace import surface_gripper_manager
@@ -252,6 +255,11 @@ class _MetricProbe:
         manager = surface_gripper_manager(world)
         if manager is None:
             return
+        for metric in self.jitter_metrics:
+            spec = metric["holdJitter"]
+            held = any(spec["prim"] in manager.get_gripped_objects(path) for path in manager.components)
+            distance = math.dist(world.prim_pose(spec["prim"])[0], world.prim_pose(spec["relativeTo"])[0]) if held else None
+            self.jitter[metric["name"]].add(distance, world.time_step)
         for metric in self.force_metrics:
             wanted = metric["gripForce"].get("gripper")
             for path, component in manager.components.items():
@@ -275,9 +283,29 @@ class _MetricProbe:
                 values[name] = math.sqrt(sum((position[i] - spec["target"][i]) ** 2 for i in axes))
             elif "gripForce" in metric:
                 values[name] = self.peaks[name]
+            elif "holdJitter" in metric:
+                values[name] = self.jitter[name].value()
             elif "timeToFinish" in metric:
                 values[name] = result.time if result is not None and result.stopped_by_graph else None
         return values
+
+
+class _Jitter:
+    """RMS of d(distance)/dt over consecutive held ticks; None if the prim was never held two ticks running."""
+
+    def __init__(self):
+        self.previous: float | None = None
+        self.total, self.count = 0.0, 0
+
+    def add(self, distance: float | None, dt: float) -> None:
+        if distance is not None and self.previous is not None:
+            rate = (distance - self.previous) / dt
+            self.total += rate * rate
+            self.count += 1
+        self.previous = distance
+
+    def value(self) -> float | None:
+        return math.sqrt(self.total / self.count) if self.count else None
 
 
 class EpisodeRunner:
@@ -353,7 +381,7 @@ class EpisodeRunner:
         simulation = self._simulation_for(edits)
         probe = _MetricProbe(self.sweep.data.get("metrics", []))
         world = simulation.world
-        after_tick = (lambda _count, _limit: probe.after_tick(world)) if probe.force_metrics else None
+        after_tick = (lambda _count, _limit: probe.after_tick(world)) if probe.per_tick else None
         result, error = None, None
         try:
             result = simulation.run(ticks=self.limits["ticks"], seconds=self.limits["seconds"], progress=after_tick)
@@ -885,7 +913,8 @@ def run_sweep(path: str, *, out: str | None = None, jobs: int | None = None, ray
     todo = [episode for episode in episodes if episode.key not in finished_keys]
     records = [record for record in done if record["key"] in {e.key for e in episodes}]
     where = f"Ray ({ray_address or 'local'})" if use_ray else f"{executor.jobs} local worker(s)"
-    echo(f"{path}: {len(episodes)} episodes ({len(sweep.points())} points x {len(sweep.seeds())} seeds)"
+    points, seeds = len(sweep.points()), len(sweep.seeds())
+    echo(f"{path}: {len(episodes)} episodes ({points} point{'s' * (points != 1)} x {seeds} seed{'s' * (seeds != 1)})"
          + (f", {len(records)} already done, {len(todo)} to run" if resume else "") + f" on {where}; results in {folder.path}")
     bar = _Progress(len(episodes), len(records), sys.stderr.isatty() if progress is None else progress)
     interrupted = False

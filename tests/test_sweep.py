@@ -241,3 +241,25 @@ def test_plot_writes_a_success_map_and_refuses_without_matplotlib(tmp_path):
                           capture_output=True, text=True)
     assert bare.returncode == 2
     assert bare.stderr.strip() == "graphflow: error: graphflow sweep plot needs matplotlib: pip install 'graphflow[viz]'"
+
+
+@pytest.mark.slow
+def test_a_soft_underdamped_hold_rings_and_a_stiff_one_does_not(tmp_path):
+    """The tutorial's second experiment in two episodes of the shipped sweep's graph: kp 100, kd 1 against kp 1e5, kd 1e4."""
+    from graphflow.sweep import EpisodeRunner
+
+    sweep = load_sweep(str(ROOT / "sweeps" / "hold_stiffness_damping.json"))
+    runner = EpisodeRunner(sweep)
+    try:
+        by_gains = {}
+        for episode in sweep.episodes():
+            gains = (episode.parameters["gripper.kp"], episode.parameters["gripper.kd"])
+            if gains in ((100, 1), (100000, 10000)):
+                by_gains[gains] = runner.run(episode)["metrics"]
+    finally:
+        runner.close()
+    soft, stiff = by_gains[(100, 1)], by_gains[(100000, 10000)]
+    assert soft["hold_jitter"] > 0.1          # m/s: the 1 kg cube bounces on a 100 N/m spring
+    assert stiff["hold_jitter"] < 0.001
+    assert soft["peak_grip_force"] > 5 * stiff["peak_grip_force"]
+    assert stiff["place_error"] < 0.005
