@@ -918,7 +918,7 @@ def run_sweep(path: str, *, out: str | None = None, jobs: int | None = None, ray
          + (f", {len(records)} already done, {len(todo)} to run" if resume else "") + f" on {where}; results in {folder.path}")
     bar = _Progress(len(episodes), len(records), sys.stderr.isatty() if progress is None else progress)
     interrupted = False
-    running = executor.run(todo) if todo else iter(())
+    running = executor.run(todo) if todo else (record for record in ())
     try:
         for record in running:
             folder.append(record)

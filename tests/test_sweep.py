@@ -134,6 +134,9 @@ def test_resume_runs_only_missing_episodes_and_drops_a_torn_line(tmp_path):
     assert rows[:2] == [json.loads(line) for line in lines[:2]]
     with open(out / "episodes.csv", newline="") as stream:
         assert len(list(csv.DictReader(stream))) == 4
+    finished = graphflow("sweep", str(sweep), "--out", str(out), "--resume")
+    assert finished.returncode == 0 and "4 already done, 0 to run" in finished.stdout
+    assert len(records(out)) == 4
 
 
 def _wait_for_records(path: Path, count: int, process) -> None:
