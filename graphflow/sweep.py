@@ -178,9 +178,10 @@ def _check(sweep: Sweep) -> None:
             raise SweepError(f"{sweep.source}: {target} is both swept (set/grid/samples) and randomized; "
                              "the randomized value would hide the swept one")
     grid, samples = sweep.data.get("grid", {}), sweep.data.get("samples", {}).get("parameters", {})
-    for target in grid:
-        if target in samples or target in sweep.data.get("set", {}):
-            raise SweepError(f"{sweep.source}: {target} appears twice (grid and samples or set)")
+    fixed = sweep.data.get("set", {})
+    for target in [*grid, *samples]:
+        if (target in grid and target in samples) or target in fixed:
+            raise SweepError(f"{sweep.source}: {target} appears twice (in two of set, grid and samples)")
     for name in sweep.metric_names:
         if sweep.metric_names.count(name) > 1:
             raise SweepError(f"{sweep.source}: metrics: the name {name!r} is used twice")
@@ -200,6 +201,23 @@ def _check(sweep: Sweep) -> None:
                     apply_stage_overrides(stage, stage_edits)
     except OverrideError as error:
         raise SweepError(str(error)) from None
+    _check_metric_prims(sweep, document, stage)
+
+
+def _check_metric_prims(sweep: Sweep, document, stage) -> None:
+    """Every prim a metric names must be on the stage (else every episode would fail the same way)."""
+    for index, metric in enumerate(sweep.data.get("metrics", [])):
+        kind, spec = next((k, v) for k, v in metric.items() if k != "name")
+        paths = [spec[key] for key in ("prim", "relativeTo", "gripper") if key in spec]
+        if kind == "timeToFinish":
+            continue
+        if document.settings.get("stage") is None:
+            raise SweepError(f"{sweep.source}: metrics/{index} ({metric['name']}): {kind} needs a graph with a stage")
+        if stage is None:
+            stage = Scenario(document, ()).open_stage()
+        for path in paths:
+            if not stage.GetPrimAtPath(path):
+                raise SweepError(f"{sweep.source}: metrics/{index} ({metric['name']}): the stage has no prim {path}")
 
 
 # ------------------------------------------------------------------ running episodes (in workers)

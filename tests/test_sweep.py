@@ -95,6 +95,8 @@ def test_grid_and_samples_combine_and_samples_are_seeded(tmp_path):
      "at_least_three.b is both swept"),
     ({"grid": {"at_least_three": [1]}}, "grid"),
     ({"seeds": 0}, "seeds"),
+    ({"metrics": [{"name": "err", "positionError": {"prim": "/World/Cube", "target": [0, 0, 0]}}]},
+     "metrics/0 (err): positionError needs a graph with a stage"),
 ])
 def test_bad_sweeps_exit_2_with_one_line(tmp_path, fields, message):
     sweep = write_sweep(tmp_path, **fields)
