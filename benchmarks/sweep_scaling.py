@@ -55,16 +55,10 @@ def _quick_sweep(folder: Path) -> Path:
 
 
 def _per_process(sweep, episodes) -> float:
-    """Wall seconds to run *episodes* as one ``graphflow run`` process each."""
+    """Wall seconds to run *episodes* as one ``graphflow run`` process each (the records' replay commands)."""
     started = time.perf_counter()
     for episode in episodes:
-        command = [sys.executable, "-m", "graphflow.cli", "run", sweep.graph_source, "--seed", str(episode.seed)]
-        if "ticks" in sweep.data:
-            command += ["--ticks", str(sweep.data["ticks"])]
-        for target, value in {**sweep.data.get("set", {}), **episode.parameters}.items():
-            command += ["--set", f"{target}={json.dumps(value)}"]
-        if sweep.data.get("randomize"):
-            command += ["--randomize", sweep.source]
+        command = [sys.executable, "-m", "graphflow.cli", *sweep.replay_command(episode)[1:]]
         subprocess.run(command, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, cwd=ROOT)
     return time.perf_counter() - started
 

@@ -24,6 +24,7 @@ import io
 import json
 import math
 import os
+import shlex
 import sys
 import time
 from dataclasses import dataclass, field
@@ -116,6 +117,18 @@ class Sweep:
         point = [Override(target, value, origin=f"{self.source}: {target}={json.dumps(value)}")
                  for target, value in episode.parameters.items()]
         return [*self.fixed_overrides(), *point, *self.randomization().draw(episode.seed)]
+
+    def replay_command(self, episode: Episode) -> list[str]:
+        """The ``graphflow run`` arguments that run this one episode alone (same overrides, scenario and seed)."""
+        command = ["graphflow", "run", self.graph_source, "--seed", str(episode.seed)]
+        for option in ("ticks", "seconds"):
+            if self.data.get(option) is not None:
+                command += [f"--{option}", str(self.data[option])]
+        for target, value in {**self.data.get("set", {}), **episode.parameters}.items():
+            command += ["--set", f"{target}={json.dumps(value)}"]
+        if self.data.get("randomize"):
+            command += ["--randomize", self.source]
+        return command
 
     def limits(self) -> dict:
         seconds = self.data.get("seconds")
@@ -411,7 +424,8 @@ class EpisodeRunner:
         return episode_record(episode, passed=passed, failures=failures, metrics=metrics, randomized=drawn,
                               ticks=result.ticks if result else simulation.instance.tick_count,
                               time=world.time, finished=bool(result and result.stopped_by_graph),
-                              warnings=self._warnings.lines, wall=time.perf_counter() - started)
+                              warnings=self._warnings.lines, wall=time.perf_counter() - started,
+                              replay=shlex.join(self.sweep.replay_command(episode)))
 
     def close(self) -> None:
         if self._simulation is not None:
@@ -461,13 +475,14 @@ def _edit_value(edit):
 
 def episode_record(episode: Episode, *, passed: bool, failures: list[str], metrics: Mapping[str, Any],
                    randomized: Mapping[str, Any] | None = None, ticks: int = 0, time: float = 0.0,
-                   finished: bool = False, warnings: Sequence[str] = (), wall: float = 0.0) -> dict:
+                   finished: bool = False, warnings: Sequence[str] = (), wall: float = 0.0,
+                   replay: str = "") -> dict:
     """The JSON record of one episode (one line of episodes.jsonl)."""
     return {"episode": episode.index, "key": episode.key, "point": episode.point, "seed": episode.seed,
             "parameters": dict(episode.parameters), "randomized": dict(randomized or {}),
             "passed": passed, "failures": list(failures), "metrics": dict(metrics),
             "warnings": list(warnings), "ticks": ticks, "time": round(time, 9), "finished": finished,
-            "wall": round(wall, 4)}
+            "wall": round(wall, 4), "replay": replay}
 
 
 def failed_record(episode: Episode, reason: str, metric_names: Sequence[str]) -> dict:

@@ -268,3 +268,16 @@ def test_a_soft_underdamped_hold_rings_and_a_stiff_one_does_not(tmp_path):
     assert stiff["hold_jitter"] < 0.001
     assert soft["peak_grip_force"] > 5 * stiff["peak_grip_force"]
     assert stiff["place_error"] < 0.005
+
+
+def test_the_replay_command_runs_the_episode_alone(tmp_path):
+    sweep = write_sweep(tmp_path, grid={"at_least_three.b": [2]}, seeds={"start": 5, "count": 1},
+                        randomize=[{"set": "print_done.text", "choice": ["one", "two", "three"]}])
+    out = tmp_path / "out"
+    assert graphflow("sweep", str(sweep), "--out", str(out), "-j", "1").returncode == 0
+    record = records(out)[0]
+    command = record["replay"].split()
+    assert command[:2] == ["graphflow", "run"] and "--seed" in command and "5" in command
+    alone = graphflow(*command[1:])
+    assert alone.returncode == 0, alone.stderr
+    assert alone.stdout.splitlines() == ["count = 1", record["randomized"]["print_done.text"]]
