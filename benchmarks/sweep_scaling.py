@@ -9,7 +9,8 @@ open the stage). ``per_process`` runs each episode as its own ``graphflow run --
 ... --seed`` process, what a shell loop would do. Ray (if installed) runs the same episodes on a
 local Ray started for the purpose; its start-up is reported apart (``ray_start``) and its overhead
 is measured from its first to its last record against the pool's. Targets: 2 workers at least 1.8x
-one worker on a quiet machine; Ray at most 10 % slower than the pool. Ratio = wall(2 workers) /
+one worker on a quiet machine; Ray at most 10 % slower than the pool. ``pyramid``: episodes of
+``sweeps/pyramid_randomized.json`` per CPU second in a warm runner (target at least 1 per core). Ratio = wall(2 workers) /
 wall(1 worker) (0.5 is perfect scaling). On a shared machine the wall figures follow the other
 load; ``cpu_scaling`` (2 x CPU per episode on 1 worker / on 2 workers, from the joined workers'
 rusage) is what two idle cores would give. ``--quick`` uses the core counter graph and 4 episodes.
@@ -27,6 +28,7 @@ from pathlib import Path
 from . import GRAPHS, ROOT, Skip, line
 
 SWEEP = ROOT / "sweeps" / "force_limit_mass.json"
+PYRAMID = ROOT / "sweeps" / "pyramid_randomized.json"
 
 
 def _children_cpu() -> float:
@@ -52,6 +54,22 @@ def _quick_sweep(folder: Path) -> Path:
                                 "graph": str(GRAPHS / "counter_branch_print.json"),
                                 "grid": {"at_least_three.b": [2000, 2001, 2002, 2003]}, "ticks": 5000}))
     return path
+
+
+def _pyramid_cpu_per_episode(count: int = 3) -> float:
+    """CPU seconds per episode of the randomized pyramid sweep in one warm runner (the pool's steady state)."""
+    from graphflow.sweep import EpisodeRunner, load_sweep
+
+    sweep = load_sweep(str(PYRAMID))
+    runner = EpisodeRunner(sweep)
+    try:
+        runner.run(sweep.episodes()[0])   # warm-up: imports, first parse
+        started = time.process_time()
+        for episode in sweep.episodes()[1:count + 1]:
+            runner.run(episode)
+        return (time.process_time() - started) / count
+    finally:
+        runner.close()
 
 
 def _per_process(sweep, episodes) -> float:
@@ -106,5 +124,10 @@ def run(quick: bool = False) -> str:
             figures["ray_overhead"] = f"{100 * (steady_ray / steady_pool - 1):+.0f}%"
             detail += (f"; Ray (2 actors) {wall_ray:.2f} s in all, first record after {first_ray:.2f} s, "
                        f"then {steady_ray:.2f} s against the pool's {steady_pool:.2f} s (records identical)")
+        if not quick and PYRAMID.exists():
+            pyramid_cpu = _pyramid_cpu_per_episode()
+            figures["pyramid"] = f"{1 / pyramid_cpu:.2f}ep/s/core"
+            detail += (f"; randomized pyramid (sweeps/{PYRAMID.name}): {pyramid_cpu:.2f} CPU s per episode, "
+                       f"{1 / pyramid_cpu:.2f} episodes per second per core (target >= 1; Ravens oracle 0.135)")
         print(detail)
     return line("sweep_scaling", wall2 / wall1, **figures)
