@@ -281,3 +281,31 @@ def test_the_replay_command_runs_the_episode_alone(tmp_path):
     alone = graphflow(*command[1:])
     assert alone.returncode == 0, alone.stderr
     assert alone.stdout.splitlines() == ["count = 1", record["randomized"]["print_done.text"]]
+
+
+@pytest.mark.slow
+def test_an_episode_in_a_busy_worker_equals_its_replay_in_a_fresh_run():
+    """Session-layer reuse in a worker gives exactly the world `graphflow run --set ... --randomize --seed` builds."""
+    import math
+
+    from graphflow.document import load_document
+    from graphflow.overrides import scenario_for_run
+    from graphflow.runtime import Simulation
+    from graphflow.sweep import EpisodeRunner
+
+    sweep = load_sweep(str(ROOT / "sweeps" / "force_limit_mass.json"))
+    episodes = sweep.episodes()
+    runner = EpisodeRunner(sweep)
+    try:
+        runner.run(episodes[17])
+        record = runner.run(episodes[8])
+    finally:
+        runner.close()
+    command = sweep.replay_command(episodes[8])
+    sets = [command[i + 1] for i, word in enumerate(command) if word == "--set"]
+    scenario = scenario_for_run(load_document(sweep.graph_source), sets, sweep.source, episodes[8].seed)
+    with Simulation(scenario.document, world=scenario.create_world()) as simulation:
+        result = simulation.run(seconds=sweep.limits()["seconds"])
+        position = simulation.world.prim_pose("/World/Cube")[0]
+    assert result.ticks == record["ticks"]
+    assert math.dist(position[:2], (-0.4, 0.5)) == record["metrics"]["place_error"]
