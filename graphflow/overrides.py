@@ -344,12 +344,6 @@ def make_scenario(document: GraphDocument, edits: Sequence[Override | PoseJitter
     return Scenario(changed, stage_edits)
 
 
-def check_stage_edits(scenario: Scenario) -> None:
-    """Apply the stage edits to a throwaway stage so that bad ones fail before any run starts."""
-    if scenario.stage_edits:
-        scenario.open_stage()
-
-
 def scenario_for_run(document: GraphDocument, set_texts: Sequence[str], randomize_file: str | None,
                      seed: int) -> Scenario:
     """What ``graphflow run --set ... [--randomize FILE --seed N]`` runs; raises OverrideError.

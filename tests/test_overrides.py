@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from graphflow.document import load_document
-from graphflow.overrides import Override, OverrideError, PoseJitter, apply_node_overrides, parse_set, scenario_for_run
+from graphflow.overrides import PoseJitter, apply_node_overrides, parse_set, scenario_for_run
 from graphflow.randomize import Randomization, load_randomization
 
 ROOT = Path(__file__).resolve().parent.parent

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from graphflow.sweep import LocalPool, SweepError, load_sweep, run_sweep, wilson_interval
+from graphflow.sweep import LocalPool, load_sweep, run_sweep, wilson_interval
 
 ROOT = Path(__file__).resolve().parent.parent
 COUNTER = ROOT / "graphs" / "counter_branch_print.json"
