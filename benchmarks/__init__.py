@@ -26,7 +26,8 @@ from typing import Callable
 ROOT = Path(__file__).resolve().parent.parent
 GRAPHS = ROOT / "graphs"
 
-NAMES = ("dispatch", "pick_place_overhead", "plain_pybullet", "realtime", "instances", "startup", "memory")
+NAMES = ("dispatch", "pick_place_overhead", "plain_pybullet", "realtime", "instances", "startup", "memory",
+         "sweep_scaling")
 
 
 class Skip(Exception):

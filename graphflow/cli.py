@@ -129,7 +129,11 @@ def command_run(args) -> int:
 
         route_native_stdout_to_stderr()
     try:
-        simulation = Simulation(document, gui=args.gui, listeners=[_PrintedLog()])
+        from .randomize import scenario_for_run
+
+        scenario = scenario_for_run(document, args.set, args.randomize, seed)
+        document = scenario.document
+        simulation = Simulation(document, world=scenario.create_world(gui=args.gui), listeners=[_PrintedLog()])
     except (ValueError, OSError) as error:
         raise BadInput(f"{args.graph}: {error}") from None
     if keys is not None:
@@ -467,6 +471,11 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--checks", action="store_true",
                      help="evaluate the graph's checks even when --ticks, --seconds, --key(s), --gamepad, --pad or --gui "
                           "change the run (by default they are evaluated only for the run as written)")
+    run.add_argument("--set", action="append", default=[], metavar="TARGET=VALUE",
+                     help="override (repeatable): NODE.INPUT=VALUE (a node input) or /Prim/Path.attribute=VALUE "
+                          "(a stage attribute, in USD units); VALUE is JSON or a plain string (docs/sweeps.md)")
+    run.add_argument("--randomize", metavar="FILE",
+                     help="draw the randomize entries of FILE (a sweep file or {\"randomize\": [...]}) from --seed")
     run.add_argument("--log-level", default="warning", choices=["debug", "info", "warning", "error"],
                      help="Python logging level on stderr (default warning)")
     run.add_argument("--trace", metavar="FILE", help="write what happens every tick as JSON Lines (docs/trace.md)")
@@ -538,6 +547,11 @@ def build_parser() -> argparse.ArgumentParser:
     plot.add_argument("trace", help="trace file written by graphflow run --trace")
     plot.add_argument("-o", "--output", required=True, metavar="FILE", help="image file (.png, .svg or .pdf)")
     plot.set_defaults(handler=command_plot)
+
+    from .sweep import add_sweep_parser
+    from .sweep_plot import plot_command
+
+    add_sweep_parser(commands, plot_command)
     return parser
 
 

@@ -251,8 +251,8 @@ def _advance(db, routine):
             db.error(f"inputs:robotPrim: {error}")
     kind, tip = routine.step(db)
     if kind == "move":
-        try:
-            arm.move_tip(tip, db.inputs.endEffectorOrientation)
+        try:   # a routine may turn the tip itself (PickPlaceSequence's place yaws)
+            arm.move_tip(tip, getattr(routine, "orientation", db.inputs.endEffectorOrientation))
         except ValueError as error:
             db.error(str(error))
     elif kind in ("close", "open"):

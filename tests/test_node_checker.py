@@ -21,6 +21,8 @@ STAGE_INPUTS = {
     "graphflow.LegacySurfaceGripper": {"endEffectorPrim": EE},
     "graphflow.PickPlaceController": {"robotPrim": UR10, "gripperPrim": GRIPPER,
                                       "pickingPosition": [0.6, 0.0, 0.03], "placingPosition": [0.6, 0.3, 0.03]},
+    "graphflow.PickPlaceSequence": {"robotPrim": UR10, "gripperPrim": GRIPPER, "objectPrims": [CUBE],
+                                    "placePositions": [[0.6, 0.3, 0.03]]},
     "graphflow.StackingController": {"robotPrim": UR10, "gripperPrim": GRIPPER, "cubePrims": [CUBE],
                                      "stackPosition": [0.6, 0.3, 0.0]},
     "graphflow.ReadJointState": {"prim": UR10},
