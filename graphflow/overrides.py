@@ -301,7 +301,7 @@ class Scenario:
 
     def create_world(self, *, gui: bool = False):
         """The document's world with the stage edits on the session layer (as ``runtime.create_world_for``)."""
-        from .runtime import create_world_for
+        from .runtime import create_world, create_world_for
 
         if not self.stage_edits:
             return create_world_for(self.document, gui=gui)
@@ -310,8 +310,8 @@ class Scenario:
 
         settings = self.document.settings
         try:
-            return physics.create_world(stage, time_step=settings.get("timeStep"),
-                                        substeps=settings.get("substeps", 1), gui=gui)
+            return create_world(stage, time_step=settings.get("timeStep"), substeps=settings.get("substeps", 1),
+                                gui=gui)
         except physics.StageError as error:
             labels = ", ".join(edit.label for edit in self.stage_edits)
             raise OverrideError(f"{labels}: the stage with these overrides is not valid: {error}") from None
