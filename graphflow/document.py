@@ -7,9 +7,9 @@ a file at once, each as one line naming the file, node and attribute.
 from __future__ import annotations
 
 import json
+import math
 import os
-import tempfile
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import lru_cache
 from importlib import resources
 from pathlib import Path
@@ -18,6 +18,7 @@ from typing import Any, Mapping
 
 import networkx as nx
 
+from .files import FileProblem, one_line, read_json, write_text
 from .registry import Registry, default_registry
 from .spec import NodeType
 from .types import TypeMismatch, can_connect, parse_type
@@ -35,6 +36,7 @@ class Problem:
     node: str | None = None
     attribute: str | None = None
     kind: str = "input"  # how the attribute is named in the message: input, output, connection, variable
+    path: tuple = ()     # where in the JSON a schema problem is (("nodes", 3, "name")); () for the others
 
     def __str__(self) -> str:
         locator = []
@@ -43,8 +45,8 @@ class Problem:
         if self.attribute is not None:
             locator.append(f"{self.kind} '{self.attribute}'")
         if locator:
-            return f"{self.file}: {' '.join(locator)}: {self.message}"
-        return f"{self.file}: {self.message}"
+            return one_line(f"{self.file}: {' '.join(locator)}: {self.message}")
+        return one_line(f"{self.file}: {self.message}")
 
 
 class GraphError(ValueError):
@@ -169,10 +171,12 @@ def _schema_problems(data: Any, source: str) -> list[Problem]:
             except (IndexError, AttributeError, KeyError, TypeError):
                 node_name = None
         location = "/".join(str(p) for p in path) or "document"
-        if node_name:
-            problems.append(Problem(source, f"{location}: {error.message}", node=node_name, attribute=None))
-        else:
-            problems.append(Problem(source, f"{location}: {error.message}"))
+        message = error.message
+        if error.validator == "pattern" and path and path[-1] == "name":
+            message = f"{error.instance!r} is not a name (letters, digits, '_' and '-', not starting with a digit or '-')"
+        if not isinstance(node_name, str):
+            node_name = None
+        problems.append(Problem(source, f"{location}: {message}", node=node_name, path=tuple(path)))
     return problems
 
 
@@ -180,7 +184,7 @@ def parse_document(data: Any, source: str = "<graph>", registry: Registry | None
     """Build and validate a document from parsed JSON; raise GraphError listing every problem."""
     problems = _schema_problems(data, source)
     if problems:
-        raise GraphError(problems)
+        raise GraphError(problems + _problems_of_valid_parts(data, source, registry, problems))
     major = data["formatVersion"][0]
     if major != FORMAT_VERSION[0]:
         raise GraphError([Problem(source, f"formatVersion {data['formatVersion']} is not supported (this runtime reads {FORMAT_VERSION[0]}.x)")])
@@ -202,6 +206,33 @@ def parse_document(data: Any, source: str = "<graph>", registry: Registry | None
     return document
 
 
+def _problems_of_valid_parts(data: Any, source: str, registry: Registry | None, schema_problems) -> list[Problem]:
+    """Semantic problems of the entries the schema accepted, so one pass lists both kinds."""
+    if not isinstance(data, dict) or not isinstance(data.get("nodes"), list):
+        return []
+    broken = {tuple(p.path[:2]) for p in schema_problems if len(p.path) >= 2}
+    broken_sections = {p.path[0] for p in schema_problems if len(p.path) == 1}
+
+    def kept(section: str) -> list:
+        entries = data.get(section, [])
+        if section in broken_sections or not isinstance(entries, list):
+            return []
+        return [entry for index, entry in enumerate(entries) if (section, index) not in broken]
+
+    skipped = {entry.get("name") for index, entry in enumerate(data["nodes"])
+               if ("nodes", index) in broken and isinstance(entry, dict)}
+    settings = data.get("settings", {})
+    document = GraphDocument(
+        nodes=tuple(NodeDoc(n["name"], n["type"], n.get("typeVersion"), _frozen(n.get("inputs", {})))
+                    for n in kept("nodes")),
+        connections=tuple(_parse_connection(c) for c in kept("connections")),
+        variables=tuple(Variable(v["name"], v["type"], v.get("default")) for v in kept("variables")),
+        settings=_frozen(settings if isinstance(settings, dict) and "settings" not in broken_sections
+                         and not any(p.path[:1] == ("settings",) for p in schema_problems) else {}),
+        source=source)
+    return [problem for problem in validate(document, registry) if problem.node not in skipped]
+
+
 def _parse_connection(entry: dict) -> Connection:
     src_node, src_attr = entry["src"].split(".", 1)
     dst_node, dst_attr = entry["dst"].split(".", 1)
@@ -209,19 +240,12 @@ def _parse_connection(entry: dict) -> Connection:
 
 
 def load_document(path: str | os.PathLike, registry: Registry | None = None) -> GraphDocument:
-    """Read and validate a graph file."""
-    source = str(path)
+    """Read (strict JSON: see graphflow.files) and validate a graph file."""
     try:
-        text = Path(path).read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise GraphError([Problem(source, "file not found")]) from None
-    except (OSError, UnicodeDecodeError) as error:
-        raise GraphError([Problem(source, f"cannot read file: {error}")]) from None
-    try:
-        data = json.loads(text)
-    except json.JSONDecodeError as error:
-        raise GraphError([Problem(source, f"malformed JSON at line {error.lineno} column {error.colno}: {error.msg}")]) from None
-    return parse_document(data, source, registry)
+        data = read_json(path)
+    except FileProblem as error:
+        raise GraphError([Problem(str(path), error.reason)]) from None
+    return parse_document(data, str(path), registry)
 
 
 def dumps(document: GraphDocument) -> str:
@@ -229,21 +253,24 @@ def dumps(document: GraphDocument) -> str:
     return json.dumps(document.to_json(), indent=2, sort_keys=True, ensure_ascii=False) + "\n"
 
 
-def save_document(document: GraphDocument, path: str | os.PathLike) -> None:
-    """Write atomically: a temporary file in the same folder, then rename over the target."""
-    target = Path(path)
-    text = dumps(document)
-    handle, temporary = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent or ".")
-    try:
-        with os.fdopen(handle, "w", encoding="utf-8") as stream:
-            stream.write(text)
-            stream.flush()
-            os.fsync(stream.fileno())
-        os.replace(temporary, target)
-    except BaseException:
-        if os.path.exists(temporary):
-            os.unlink(temporary)
-        raise
+def save_document(document: GraphDocument, path: str | os.PathLike, *, force: bool = True) -> None:
+    """Write atomically (graphflow.files.write_text): never half-written, over an existing file only with *force*.
+
+    A relative ``settings.stage`` is rebased onto the new file's folder, so the saved graph still finds its stage.
+    """
+    write_text(path, dumps(rebased(document, path)), force=force)
+
+
+def rebased(document: GraphDocument, path: str | os.PathLike) -> GraphDocument:
+    """*document* as it must read when saved at *path*: its relative stage path made relative to that folder."""
+    stage = document.settings.get("stage")
+    if not isinstance(stage, str) or stage.startswith("asset:") or Path(stage).is_absolute():
+        return document
+    folder = Path(path).resolve().parent
+    if folder == document.base_dir:
+        return document
+    moved = Path(os.path.relpath(document.base_dir / stage, folder)).as_posix()
+    return replace(document, settings=_frozen({**document.settings, "stage": moved}), source=str(path))
 
 
 # ---------------------------------------------------------------- validation
@@ -268,6 +295,7 @@ def validate(document: GraphDocument, registry: Registry | None = None) -> list[
         types[node.name] = node_type
         problems.extend(_node_problems(source, node, node_type))
 
+    problems.extend(_settings_problems(source, document.settings))
     problems.extend(_variable_problems(source, document.variables))
     problems.extend(_connection_problems(source, document, types))
     return problems
@@ -297,6 +325,13 @@ def _node_problems(source: str, node: NodeDoc, node_type: NodeType) -> list[Prob
     return problems
 
 
+def _settings_problems(source: str, settings: Mapping[str, Any]) -> list[Problem]:
+    """Numbers the schema lets through but a run cannot use (NaN and infinity pass its range checks)."""
+    return [Problem(source, f"settings/{name}: {value!r} is not a finite number")
+            for name in ("timeStep", "duration", "substeps", "stepBudget")
+            if isinstance(value := settings.get(name), float) and not math.isfinite(value)]
+
+
 def _variable_problems(source: str, variables) -> list[Problem]:
     problems, seen = [], set()
     for variable in variables:
@@ -307,6 +342,10 @@ def _variable_problems(source: str, variables) -> list[Problem]:
             attr_type = parse_type(variable.type)
         except ValueError as error:
             problems.append(Problem(source, str(error), attribute=variable.name, kind="variable"))
+            continue
+        if attr_type.is_execution:
+            problems.append(Problem(source, "a variable cannot be of execution type (exec pulses are not values)",
+                                    attribute=variable.name, kind="variable"))
             continue
         if variable.default is not None:
             try:

@@ -56,6 +56,10 @@ TUPLE_ROLES = {"quatd": "double", "quatf": "float", "quath": "half",
                "normald": "double", "normalf": "float", "colord": "double", "colorf": "float",
                "matrixd": "double"}
 
+# the values each scalar type can hold (OmniGraph's int and uint are 32-bit, float is 32-bit IEEE)
+INTEGER_RANGES = {"int": (-2**31, 2**31 - 1), "int64": (-2**63, 2**63 - 1), "uint": (0, 2**32 - 1), "uint64": (0, 2**64 - 1)}
+REAL_LIMITS = {"float": 3.4028234663852886e38, "half": 65504.0}
+
 _TYPE_PATTERN = re.compile(r"^(?P<base>[a-z0-9]+)(\[(?P<n>\d+)\])?(?P<array>\[\])?$")
 
 
@@ -140,17 +144,26 @@ def _coerce_scalar(kind: str, name: str, value):
         if isinstance(value, bool):
             return value
     elif kind in ("int", "uint"):
-        if isinstance(value, int) and not isinstance(value, bool):
-            if kind == "uint" and value < 0:
-                raise TypeMismatch(f"expected {name} (>= 0), got {value}")
-            return value
         if isinstance(value, float) and value.is_integer():
-            return int(value)
+            value = int(value)
+        if isinstance(value, int) and not isinstance(value, bool):
+            low, high = INTEGER_RANGES.get(name, (None, None))
+            if low is not None and not low <= value <= high:
+                raise TypeMismatch(f"expected {name} ({low} to {high}), got {_show(value)}")
+            return value
     elif kind == "real":
-        if isinstance(value, (int, float)) and not isinstance(value, bool):
-            return float(value)
+        if isinstance(value, int) and not isinstance(value, bool):
+            try:
+                value = float(value)
+            except OverflowError:
+                raise TypeMismatch(f"expected {name}, got a number too large for it") from None
         if isinstance(value, str) and value.lower() in ("nan", "inf", "-inf", "infinity", "-infinity"):
-            return float(value)
+            value = float(value)
+        if isinstance(value, float):
+            limit = REAL_LIMITS.get(name)
+            if limit is not None and math.isfinite(value) and abs(value) > limit:
+                raise TypeMismatch(f"expected {name} (magnitude up to {limit:g}), got {_show(value)}")
+            return value
     elif kind == "str":
         if isinstance(value, str):
             return value
