@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import platform
 import sys
 from dataclasses import dataclass
@@ -191,7 +192,7 @@ class TraceRecorder:
         header = {
             "format": TRACE_FORMAT,
             "version": TRACE_VERSION,
-            "graph": graph if graph is not None else document.source,
+            "graph": same_path_text(graph if graph is not None else document.source),
             "description": document.description,
             "stage": document.settings.get("stage"),
             "timeStep": world.time_step,
@@ -278,6 +279,11 @@ def read_trace(path: str | Path) -> Trace:
 
 # ---------------------------------------------------------------- comparing
 
+def same_path_text(path):
+    """One spelling per path, so ``graphs/x.json`` and ``./graphs/x.json`` name the same graph in traces."""
+    return os.path.normpath(path).replace(os.sep, "/") if isinstance(path, str) and path else path
+
+
 HEADER_FIELDS_IGNORED_BY_DIFF = ("versions",)   # the same run on another machine is still the same run
 
 
@@ -306,8 +312,9 @@ def _shown(value) -> str:
 
 def first_difference(left: Trace, right: Trace) -> Difference | None:
     """The first differing field: header (except versions), then tick by tick, fields in file order."""
-    left_header = {k: v for k, v in left.header.items() if k not in HEADER_FIELDS_IGNORED_BY_DIFF}
-    right_header = {k: v for k, v in right.header.items() if k not in HEADER_FIELDS_IGNORED_BY_DIFF}
+    left_header, right_header = ({key: same_path_text(value) if key == "graph" else value
+                                  for key, value in trace.header.items() if key not in HEADER_FIELDS_IGNORED_BY_DIFF}
+                                 for trace in (left, right))
     found = _first_field(left_header, right_header, "")
     if found is not None:
         return Difference(0, None, found[0], found[1], found[2])
