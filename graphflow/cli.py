@@ -14,7 +14,9 @@ import logging
 import math
 import random
 import re
+import signal
 import sys
+import threading
 import time
 import warnings
 from pathlib import Path
@@ -573,7 +575,13 @@ def _one_line_warning(message, category, filename, lineno, line=None) -> str:
     return f"warning: {message}\n"
 
 
+def _interrupt(_signal_number, _frame):
+    raise KeyboardInterrupt
+
+
 def main(argv: list[str] | None = None) -> int:
+    if threading.current_thread() is threading.main_thread():
+        signal.signal(signal.SIGTERM, _interrupt)   # `kill` cleans up like Ctrl-C: no half-written outputs
     try:
         return _main(argv)
     except KeyboardInterrupt:   # Ctrl-C at any moment: outputs in progress were removed on the way out

@@ -28,7 +28,9 @@ import networkx as nx
 from .document import GraphDocument
 from .registry import Registry, default_registry
 from .spec import NodeSpec, NodeType
+from .files import one_line
 from .types import ExecState, parse_type
+from .usd.errors import usd_message
 from .world import ClockWorld, World
 
 DEFAULT_STEP_BUDGET = 100_000
@@ -47,7 +49,7 @@ class GraphRuntimeError(RuntimeError):
 
     def __init__(self, message: str, node: str | None = None):
         self.node = node
-        super().__init__(f"node '{node}': {message}" if node else message)
+        super().__init__(one_line(f"node '{node}': {message}" if node else message))
 
 
 class StepBudgetExceeded(GraphRuntimeError):
@@ -504,7 +506,7 @@ class GraphInstance:
 
     def _failure(self, index: int, error: Exception) -> GraphRuntimeError:
         node = self.compiled.nodes[index]
-        return GraphRuntimeError(f"{node.spec.id} failed: {type(error).__name__}: {error}", node.name)
+        return GraphRuntimeError(f"{node.spec.id} failed: {type(error).__name__}: {usd_message(error)}", node.name)
 
     def _budget_error(self) -> StepBudgetExceeded:
         busiest = Counter({node.name: count for node, count in zip(self.compiled.nodes, self.compute_counts)})

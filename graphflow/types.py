@@ -166,6 +166,8 @@ def _coerce_scalar(kind: str, name: str, value):
             return value
     elif kind == "str":
         if isinstance(value, str):
+            if name == "path" and value and not value.startswith("/"):
+                raise TypeMismatch(f"expected an absolute prim path (starting with '/'), got {_show(value)}")
             return value
     raise TypeMismatch(f"expected {name}, got {_show(value)}")
 

@@ -377,7 +377,7 @@ class PyBulletWorld:
             if owner is not None and owner != probe:
                 probe = owner
                 continue
-            probe = probe.rsplit("/", 1)[0]
+            probe = probe.rsplit("/", 1)[0] if "/" in probe else ""   # a relative path ends here too
         raise WorldError(f"{path} is not part of an articulation")
 
     def _inertial_pose(self, handle: BodyHandle) -> Pose:

@@ -26,7 +26,11 @@ class UnsupportedPrimWarning(UserWarning):
 
 
 def usd_message(error) -> str:
-    """usd-core's first error message on one line, without its C++ source location and internal namespace names."""
-    text = _PXR_NAMESPACE.sub("", " ".join(str(error).split()))
+    """An error's text on one line; for usd-core's errors the first message, without its C++ source
+    location and internal namespace names. Other text is only joined onto one line."""
+    text = " ".join(str(error).split())
+    if not _TF_PREAMBLE.search(text):
+        return _PXR_NAMESPACE.sub("", text)
+    text = _PXR_NAMESPACE.sub("", text)
     messages = [part.strip().strip("'").strip() for part in _TF_PREAMBLE.split(text)]
     return next((message for message in messages if message), "unreadable")
