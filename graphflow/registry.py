@@ -89,7 +89,7 @@ class Registry:
 def _load_entry_point(registry: Registry, entry_point) -> None:
     """Register a third-party node package; whatever is broken in it is a warning naming the package
     and module, and the built-ins (and the package's other modules) keep working."""
-    package = getattr(getattr(entry_point, "dist", None), "name", None) or entry_point.name
+    package = getattr(getattr(entry_point, "dist", None), "name", None) or getattr(entry_point, "name", entry_point.value)
 
     def skip(module: str, error: Exception) -> None:
         reason = " ".join(f"{type(error).__name__}: {error}".split())
