@@ -378,7 +378,7 @@ def command_nodes(args) -> int:
     return EXIT_OK
 
 
-_SENTENCE_END = re.compile(r"(?<!\be\.g)(?<!\bi\.e)(?<!\betc)(?<!\.\.)[.!?](?=\s+[A-Z'\"(]|\s*$)")
+_SENTENCE_END = re.compile(r"(?<!\be\.g)(?<!\bi\.e)(?<!\betc)(?<!\bvs)(?<!\.\.)[.!?](?=\s+[^\s.]|\s*$)")
 
 
 def first_sentence(text: str) -> str:
