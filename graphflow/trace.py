@@ -109,6 +109,13 @@ def sample_grippers(world) -> dict[str, GripperSample]:
     return samples
 
 
+def initial_grippers(world) -> list[str]:
+    """The surface grippers that exist when a run starts: the stage's gripper prims and any a node made already."""
+    description = getattr(world, "description", None)
+    on_stage = [gripper.path for gripper in getattr(description, "surface_grippers", ())]
+    return sorted(set(on_stage) | set(sample_grippers(world)))
+
+
 def _holding_force(manager, path: str) -> float | None:
     """Magnitude of the largest force an attachment constraint of this gripper carries (N)."""
     component = manager.component(path)
@@ -199,7 +206,7 @@ class TraceRecorder:
             "nodes": {node.name: node.spec.id for node in compiled.nodes},
             "outputs": self._outputs,
             "phases": phase_outputs(compiled),
-            "grippers": sorted(sample_grippers(world)),
+            "grippers": initial_grippers(world),
             "versions": loaded_versions(),
         }
         self.stream.write(dumps_record(header) + "\n")
