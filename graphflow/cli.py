@@ -580,13 +580,19 @@ def _interrupt(_signal_number, _frame):
 
 
 def main(argv: list[str] | None = None) -> int:
-    if threading.current_thread() is threading.main_thread():
-        signal.signal(signal.SIGTERM, _interrupt)   # `kill` cleans up like Ctrl-C: no half-written outputs
+    on_main_thread = threading.current_thread() is threading.main_thread()
+    # `kill` cleans up like Ctrl-C: no half-written outputs
+    previous_handler = signal.signal(signal.SIGTERM, _interrupt) if on_main_thread else None
+    previous_format = warnings.formatwarning
     try:
         return _main(argv)
     except KeyboardInterrupt:   # Ctrl-C at any moment: outputs in progress were removed on the way out
         print("graphflow: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
+    finally:
+        warnings.formatwarning = previous_format
+        if previous_handler is not None:
+            signal.signal(signal.SIGTERM, previous_handler)
 
 
 def _main(argv: list[str] | None) -> int:
