@@ -258,12 +258,12 @@ class Trace:
 
 def read_trace(path: str | Path) -> Trace:
     """Parse a trace file; raise TraceError naming the line when it is not a trace."""
+    from .files import FileProblem, read_text
+
     try:
-        lines = Path(path).read_text(encoding="utf-8").splitlines()
-    except FileNotFoundError:
-        raise TraceError(f"{path}: file not found") from None
-    except (OSError, UnicodeDecodeError) as error:
-        raise TraceError(f"{path}: cannot read file: {error}") from None
+        lines = read_text(path).splitlines()   # regular files only: never reads /dev/zero forever
+    except FileProblem as error:
+        raise TraceError(str(error)) from None
     records = []
     for number, line in enumerate(lines, start=1):
         try:

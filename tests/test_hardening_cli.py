@@ -475,3 +475,24 @@ def test_readme_first_graph_does_what_its_description_says(tmp_path, capsys):
 
 def test_runtime_error_message_is_one_line_even_with_newlines_in_it():
     assert str(GraphRuntimeError("first\nsecond", "node")) == "node 'node': first\\nsecond"
+
+
+@pytest.mark.parametrize("args", [
+    ("run", COUNTER, "--keys", "{bad}"),
+    ("run", COUNTER, "--gamepad", "{bad}"),
+    ("trace", "diff", "{bad}", "{bad}"),
+    ("plot", "{bad}", "-o", "{out}"),
+])
+def test_every_json_input_is_read_strictly(tmp_path, capsys, args):
+    # scripted keys, gamepad timelines and traces go through the same reader as graph files
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"keys": ["A@1"], "keys": [], "gamepad": []}')
+    argv = [str(a).format(bad=bad, out=tmp_path / "out.png") for a in args]
+    code, _out, err = run_cli(capsys, *argv)
+    assert code == 2
+    assert err.count("\n") == 1 and str(bad) in err
+    if args[0] == "run":
+        assert 'duplicate key "keys"' in err
+    if os.path.exists("/dev/zero"):
+        code, _out, err = run_cli(capsys, *[a.replace(str(bad), "/dev/zero") for a in argv])
+        assert (code, err.count("\n")) == (2, 1) and "/dev/zero: not a regular file" in err
