@@ -613,6 +613,9 @@ def _main(argv: list[str] | None) -> int:
             print(f"graphflow: error: {line}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except GraphRuntimeError as error:
+        if isinstance(error.__cause__, BrokenPipeError):   # a print node's reader (head) has gone: done
+            sys.stderr.close()
+            return EXIT_OK
         if debug:
             raise
         print(f"graphflow: run-time error: {error}", file=sys.stderr)

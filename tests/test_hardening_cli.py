@@ -496,3 +496,16 @@ def test_every_json_input_is_read_strictly(tmp_path, capsys, args):
     if os.path.exists("/dev/zero"):
         code, _out, err = run_cli(capsys, *[a.replace(str(bad), "/dev/zero") for a in argv])
         assert (code, err.count("\n")) == (2, 1) and "/dev/zero: not a regular file" in err
+
+
+def test_output_piped_into_a_reader_that_stops_early_is_not_an_error(tmp_path):
+    printer = write(tmp_path / "printer.json", graph(
+        settings={"timeStep": 0.01},
+        nodes=[ON_TICK, {"name": "say", "type": "omni.graph.ui_nodes.PrintText", "inputs": {"text": "hi"}}],
+        connections=[{"src": "tick.outputs:tick", "dst": "say.inputs:execIn"}]))
+    process = subprocess.Popen([sys.executable, "-m", "graphflow", "run", str(printer), "--seconds", "1e6"],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    assert process.stdout.readline() == "hi\n"
+    process.stdout.close()   # like `| head -1`
+    assert process.wait(timeout=60) == 0
+    assert process.stderr.read() == ""
