@@ -22,7 +22,7 @@ import warnings
 from pathlib import Path
 
 from . import __version__
-from .document import GraphError, load_document, parse_document, save_document
+from .document import MAX_DURATION, GraphError, load_document, parse_document, save_document
 from .executor import GraphRuntimeError, LogEvent
 from .files import FileProblem, atomic_output, refuse_existing
 from .gamepad import PadSpecError, attach_gamepad, scripted_pad
@@ -31,7 +31,7 @@ from .registry import default_registry
 
 EXIT_OK, EXIT_RUNTIME, EXIT_BAD_INPUT = 0, 1, 2
 EXIT_INTERRUPTED = 130   # 128 + SIGINT, as shells report a Ctrl-C
-MAX_SECONDS = 1e7        # simulated seconds: longer limits are typos (1e308, inf), not runs
+MAX_SECONDS = MAX_DURATION   # simulated seconds: longer limits are typos (1e308, inf), not runs
 EXIT_TRACES_DIFFER = 1   # graphflow trace diff, like diff(1)
 PROGRESS_AFTER_SECONDS = 2.0
 

@@ -25,6 +25,7 @@ from .types import TypeMismatch, can_connect, parse_type
 
 FORMAT_NAME = "graphflow"
 FORMAT_VERSION = (1, 0)
+MAX_DURATION = 1e7      # simulated seconds (116 days): longer is a typo, not a run (also the CLI's --seconds limit)
 MAX_HINTED_TYPES = 50   # unknown node types per file that get a "did you mean" hint
 
 
@@ -329,10 +330,15 @@ def _node_problems(source: str, node: NodeDoc, node_type: NodeType) -> list[Prob
 
 
 def _settings_problems(source: str, settings: Mapping[str, Any]) -> list[Problem]:
-    """Numbers the schema lets through but a run cannot use (NaN and infinity pass its range checks)."""
-    return [Problem(source, f"settings/{name}: {value!r} is not a finite number")
-            for name in ("timeStep", "duration", "substeps", "stepBudget")
-            if isinstance(value := settings.get(name), float) and not math.isfinite(value)]
+    """Numbers the schema lets through but a run cannot use (NaN and infinity pass its range checks,
+    and a duration of 1e308 s would never end)."""
+    problems = [Problem(source, f"settings/{name}: {value!r} is not a finite number")
+                for name in ("timeStep", "duration", "substeps", "stepBudget")
+                if isinstance(value := settings.get(name), float) and not math.isfinite(value)]
+    duration = settings.get("duration")
+    if isinstance(duration, (int, float)) and math.isfinite(duration) and duration > MAX_DURATION:
+        problems.append(Problem(source, f"settings/duration: {duration!r} s is more than {MAX_DURATION:g} simulated seconds"))
+    return problems
 
 
 def _variable_problems(source: str, variables) -> list[Problem]:

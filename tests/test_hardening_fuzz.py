@@ -130,7 +130,8 @@ def documents(draw):
                            if not wrong() else {"src": draw(st.text(max_size=15)), "dst": draw(st.text(max_size=15))})
     document = {"format": "graphflow", "formatVersion": [draw(st.integers(1, 2)) if wrong() else 1, draw(st.integers(0, 3))], "nodes": nodes,
                 "settings": {"timeStep": draw(st.sampled_from([0.5, 0.1, 1 / 60, 1e-9, 1.0])),
-                             "stepBudget": draw(st.integers(1, 300))}}
+                             "stepBudget": draw(st.integers(1, 300)),
+                             "duration": draw(st.sampled_from([1.0, 0.25, 1e7, 1e308]))}}
     if connections:
         document["connections"] = connections
     if wrong() or wrong() or wrong():

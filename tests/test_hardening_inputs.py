@@ -129,6 +129,14 @@ def test_non_finite_settings_are_errors(name, value):
     assert problems_of(graph(settings={name: value})) == [f"g.json: settings/{name}: {value!r} is not a finite number"]
 
 
+def test_a_duration_that_would_never_end_is_an_error(tmp_path, capsys):
+    path = tmp_path / "forever.json"
+    path.write_text(json.dumps(graph(settings={"duration": 1e308})))
+    code, _out, err = run_cli(capsys, "run", str(path))   # used to overflow computing the tick count
+    assert code == 2
+    assert_one_clear_line(err, f"{path}: settings/duration: 1e+308 s is more than 1e+07 simulated seconds")
+
+
 def test_a_variable_of_execution_type_is_an_error():
     assert problems_of(graph(variables=[{"name": "pulse", "type": "execution"}])) == [
         "g.json: variable 'pulse': a variable cannot be of execution type (exec pulses are not values)"]
