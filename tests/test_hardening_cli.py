@@ -509,3 +509,25 @@ def test_output_piped_into_a_reader_that_stops_early_is_not_an_error(tmp_path):
     process.stdout.close()   # like `| head -1`
     assert process.wait(timeout=60) == 0
     assert process.stderr.read() == ""
+
+
+def test_format_text_field_width_cannot_print_gigabytes(tmp_path, capsys):
+    # '{value:999999999}' used to build a 1 GB line every tick (3 GB of memory, seconds per tick)
+    def format_graph(format_input: dict) -> dict:
+        return graph(nodes=[ON_TICK, {"name": "text", "type": "graphflow.FormatText", "inputs": {"value": 1, **format_input}},
+                            {"name": "say", "type": "omni.graph.ui_nodes.PrintText"},
+                            {"name": "spec", "type": "omni.graph.nodes.ConstantString", "inputs": {"value": "{value:999999999}"}}],
+                     connections=[{"src": "tick.outputs:tick", "dst": "say.inputs:execIn"},
+                                  {"src": "text.outputs:text", "dst": "say.inputs:text"}]
+                     + ([] if format_input else [{"src": "spec.outputs:value", "dst": "text.inputs:format"}]))
+    authored = write(tmp_path / "authored.json", format_graph({"format": "{value:999999999}"}))
+    code, out, err = run_cli(capsys, "run", authored, "--ticks", "2")
+    assert (code, out) == (2, "")
+    assert err == (f"graphflow: error: {authored}: node 'text': inputs:format: field width or precision '999999999' "
+                   f"is more than 1000 characters (or set from a value)\n")
+    computed = write(tmp_path / "computed.json", format_graph({}))
+    code, out, err = run_cli(capsys, "run", computed, "--ticks", "2")
+    assert (code, out) == (1, "")
+    assert err.startswith("graphflow: run-time error: node 'text': inputs:format: field width or precision")
+    wide_enough = write(tmp_path / "fine.json", format_graph({"format": "[{value:>8.3f}]"}))
+    assert run_cli(capsys, "run", wide_enough, "--ticks", "1")[:2] == (0, "[   1.000]\n")
