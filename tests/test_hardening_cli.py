@@ -531,3 +531,21 @@ def test_format_text_field_width_cannot_print_gigabytes(tmp_path, capsys):
     assert err.startswith("graphflow: run-time error: node 'text': inputs:format: field width or precision")
     wide_enough = write(tmp_path / "fine.json", format_graph({"format": "[{value:>8.3f}]"}))
     assert run_cli(capsys, "run", wide_enough, "--ticks", "1")[:2] == (0, "[   1.000]\n")
+
+
+def test_squaring_a_variable_every_tick_stops_at_64_bits(tmp_path, capsys):
+    # 3, 9, 81, ... : Python's ints never overflow, so this used to grow to millions of digits and stall
+    squaring = write(tmp_path / "square.json", graph(
+        variables=[{"name": "x", "type": "any", "default": 3}],
+        nodes=[ON_TICK, {"name": "read", "type": "omni.graph.core.ReadVariable", "inputs": {"variableName": "x"}},
+               {"name": "square", "type": "omni.graph.nodes.Multiply"},
+               {"name": "write", "type": "omni.graph.core.WriteVariable", "inputs": {"variableName": "x"}}],
+        connections=[{"src": "tick.outputs:tick", "dst": "write.inputs:execIn"},
+                     {"src": "read.outputs:value", "dst": "square.inputs:a"},
+                     {"src": "read.outputs:value", "dst": "square.inputs:b"},
+                     {"src": "square.outputs:product", "dst": "write.inputs:value"}]))
+    code, out, err = run_cli(capsys, "run", squaring, "--ticks", "100")
+    assert (code, out) == (1, "")
+    # tick 6 holds 3**32 (51 bits); its square needs 102
+    assert err == ("graphflow: run-time error: node 'square': integer overflow: the product of 51-bit and 51-bit "
+                   "integers does not fit 64 bits\n")
