@@ -23,6 +23,7 @@ SPEC = NodeSpec(
 )
 
 
+MAX_TEXT_LENGTH = 1_000_000   # characters of outputs:text: more is runaway growth, not a message
 MAX_FIELD_WIDTH = 1000   # characters: a wider field ('{value:999999999}') is a typo that would print gigabytes
 
 
@@ -50,7 +51,15 @@ def compute(db):
         db.error(f"inputs:format: field width or precision {spec!r} is more than {MAX_FIELD_WIDTH} characters "
                  f"(or set from a value)")
     try:
-        db.outputs.text = db.inputs.format.format(db.inputs.value, value=db.inputs.value)
+        text = db.inputs.format.format(db.inputs.value, value=db.inputs.value)
     except (KeyError, IndexError, ValueError, TypeError, AttributeError) as error:
-        db.error(f"inputs:format {db.inputs.format!r} cannot format {db.inputs.value!r}: "
+        db.error(f"inputs:format {db.inputs.format!r} cannot format {_shown(db.inputs.value)}: "
                  f"{type(error).__name__}: {error}")
+    if len(text) > MAX_TEXT_LENGTH:   # e.g. a variable fed back through '{value}{value}': doubles every tick
+        db.error(f"outputs:text would be {len(text)} characters, more than {MAX_TEXT_LENGTH}")
+    db.outputs.text = text
+
+
+def _shown(value) -> str:
+    text = repr(value)
+    return text if len(text) <= 80 else text[:77] + "..."

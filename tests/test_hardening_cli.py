@@ -549,3 +549,18 @@ def test_squaring_a_variable_every_tick_stops_at_64_bits(tmp_path, capsys):
     # tick 6 holds 3**32 (51 bits); its square needs 102
     assert err == ("graphflow: run-time error: node 'square': integer overflow: the product of 51-bit and 51-bit "
                    "integers does not fit 64 bits\n")
+
+
+def test_text_doubling_every_tick_stops_at_a_million_characters(tmp_path, capsys):
+    doubling = write(tmp_path / "double.json", graph(
+        variables=[{"name": "x", "type": "string", "default": "ab"}],
+        nodes=[ON_TICK, {"name": "read", "type": "omni.graph.core.ReadVariable", "inputs": {"variableName": "x"}},
+               {"name": "twice", "type": "graphflow.FormatText", "inputs": {"format": "{value}{value}"}},
+               {"name": "write", "type": "omni.graph.core.WriteVariable", "inputs": {"variableName": "x"}}],
+        connections=[{"src": "tick.outputs:tick", "dst": "write.inputs:execIn"},
+                     {"src": "read.outputs:value", "dst": "twice.inputs:value"},
+                     {"src": "twice.outputs:text", "dst": "write.inputs:value"}]))
+    code, out, err = run_cli(capsys, "run", doubling, "--ticks", "100")
+    assert (code, out) == (1, "")
+    assert err == ("graphflow: run-time error: node 'twice': outputs:text would be 1048576 characters, "
+                   "more than 1000000\n")   # 2 * 2**19: tick 19
