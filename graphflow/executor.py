@@ -29,7 +29,7 @@ from .document import GraphDocument
 from .registry import Registry, default_registry
 from .spec import NodeSpec, NodeType
 from .files import one_line
-from .types import ExecState, parse_type
+from .types import MAX_VALUE_DEPTH, ExecState, nesting_exceeds, parse_type
 from .usd.errors import usd_message
 from .world import ClockWorld, World
 
@@ -279,7 +279,12 @@ class NodeDatabase:
         instance = self._instance
         if name not in instance.variables:
             self.error(f"no graph variable named {name!r}")
-        instance.variables[name] = instance.compiled.variable_types[name].coerce(value)
+        variable_type = instance.compiled.variable_types[name]
+        value = variable_type.coerce(value)
+        # an `any` variable fed (x, x) every tick nests one level deeper a tick; printing or tracing it doubles
+        if variable_type.is_any and isinstance(value, tuple) and nesting_exceeds(value):
+            self.error(f"variable {name!r}: value nests more than {MAX_VALUE_DEPTH} levels deep")
+        instance.variables[name] = value
 
     def error(self, message: str):
         raise GraphRuntimeError(message, self.node_name)

@@ -237,5 +237,21 @@ def can_connect(source: AttrType, destination: AttrType) -> bool:
     return source_kind in numeric and destination_kind in numeric and destination_kind != "bool"
 
 
+MAX_VALUE_DEPTH = 16   # nested tuples in one value; double[3][] is 2, a value fed back into itself grows by 1 a tick
+
+
+def nesting_exceeds(value, limit: int = MAX_VALUE_DEPTH) -> bool:
+    """Whether tuples nest deeper than *limit* in *value* (each shared tuple visited once: linear time)."""
+    pending, seen = [(value, 0)], set()
+    while pending:
+        item, depth = pending.pop()
+        if isinstance(item, tuple) and id(item) not in seen:
+            if depth >= limit:
+                return True
+            seen.add(id(item))
+            pending.extend((child, depth + 1) for child in item)
+    return False
+
+
 def is_finite_number(value) -> bool:
     return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)

@@ -564,3 +564,21 @@ def test_text_doubling_every_tick_stops_at_a_million_characters(tmp_path, capsys
     assert (code, out) == (1, "")
     assert err == ("graphflow: run-time error: node 'twice': outputs:text would be 1048576 characters, "
                    "more than 1000000\n")   # 2 * 2**19: tick 19
+
+
+def test_a_value_fed_back_into_itself_stops_at_16_levels(tmp_path, capsys):
+    # x = (x, x) every tick: cheap to build (shared), but a trace or print of it doubles every tick
+    nesting = write(tmp_path / "nest.json", graph(
+        variables=[{"name": "x", "type": "any", "default": 1}],
+        nodes=[ON_TICK, {"name": "read", "type": "omni.graph.core.ReadVariable", "inputs": {"variableName": "x"}},
+               {"name": "pair", "type": "omni.graph.nodes.ConstructArray", "inputs": {"arraySize": 2}},
+               {"name": "write", "type": "omni.graph.core.WriteVariable", "inputs": {"variableName": "x"}}],
+        connections=[{"src": "tick.outputs:tick", "dst": "write.inputs:execIn"},
+                     {"src": "read.outputs:value", "dst": "pair.inputs:input0"},
+                     {"src": "read.outputs:value", "dst": "pair.inputs:input1"},
+                     {"src": "pair.outputs:array", "dst": "write.inputs:value"}]))
+    trace = tmp_path / "nest.jsonl"
+    code, out, err = run_cli(capsys, "run", nesting, "--ticks", "100", "--trace", trace)
+    assert (code, out) == (1, "")
+    assert err == "graphflow: run-time error: node 'write': variable 'x': value nests more than 16 levels deep\n"
+    assert len(trace.read_text().splitlines()) == 1 + 16   # header and ticks 1-16; tick 17 would nest 17 deep
