@@ -8,21 +8,31 @@ arguments). Errors are one line each on stderr, without a traceback unless
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import logging
+import math
+import re
+import signal
 import sys
+import threading
 import time
+import warnings
 from pathlib import Path
 
 from . import __version__
+from .compiler import MAX_DURATION
 from .document import GraphError, load_document, parse_document, save_document
 from .executor import GraphRuntimeError, LogEvent
+from .files import FileProblem, atomic_output, refuse_existing
 from .gamepad import PadSpecError, attach_gamepad, scripted_pad
 from .keyboard import KeySpecError, attach_keyboard, scripted_keys
 from .registry import default_registry
 from .seeding import seed_everything
 
 EXIT_OK, EXIT_RUNTIME, EXIT_BAD_INPUT = 0, 1, 2
+EXIT_INTERRUPTED = 130   # 128 + SIGINT, as shells report a Ctrl-C
+MAX_SECONDS = MAX_DURATION   # simulated seconds: longer limits are typos (1e308, inf), not runs
 EXIT_TRACES_DIFFER = 1   # graphflow trace diff, like diff(1)
 PROGRESS_AFTER_SECONDS = 2.0
 
@@ -116,6 +126,8 @@ def command_run(args) -> int:
     seed_everything(seed)
     if args.record:
         _check_recording(args, document)
+    if args.trace:
+        _refuse_existing(args.trace, args.force)
     try:
         keys = scripted_keys(args.keys, args.key)
         pad = scripted_pad(args.gamepad, args.pad)
@@ -128,61 +140,56 @@ def command_run(args) -> int:
         from .physics.native_output import route_native_stdout_to_stderr
 
         route_native_stdout_to_stderr()
+    from .usd.errors import StageError
+
     try:
         from .randomize import scenario_for_run
 
         scenario = scenario_for_run(document, args.set, args.randomize, seed)
         document = scenario.document
         simulation = Simulation(document, world=scenario.create_world(gui=args.gui), listeners=[_PrintedLog()])
+    except StageError as error:
+        from .preflight import stage_error_problems
+
+        raise BadInput("\n".join(str(p) for p in stage_error_problems(args.graph, error))) from None
     except (ValueError, OSError) as error:
         raise BadInput(f"{args.graph}: {error}") from None
-    if keys is not None:
-        attach_keyboard(simulation.world, keys)
-    if pad is not None:
-        attach_gamepad(simulation.world, pad)
-    topic_recording = _ros2_run().attach_topics(simulation.world, topics, args.record_topics)
     changed = _scenario_changes(args)
     evaluator = CheckEvaluator(document if args.checks or not changed else None)
     seconds = run_seconds(document, evaluator, args.ticks, args.seconds)
-    simulation.add_listener(evaluator)
-    trace_stream = video = None   # ours to close (with the topic recording); per-tick jobs are listeners or services
-    try:
-        if args.trace:
-            trace_stream = _open_trace(args.trace, simulation, args.graph)
-        if args.record:
-            video = simulation.world.services.add(_start_recording(args, simulation.world))
-    except BadInput:
-        if topic_recording is not None:
-            topic_recording.abandon()
-        simulation.close()
-        raise
-    if args.gui and args.speed > 0:
-        simulation.add_listener(_RealTimePacer(args.speed))
-    simulation.add_listener(_Progress(simulation, sys.stdout.isatty(),
-                                      simulation.tick_limit(ticks=args.ticks, seconds=seconds)))
-
-    started = time.perf_counter()
     verdict = ScenarioResult(args.graph, len(evaluator))
-    try:
-        result = simulation.run(ticks=args.ticks, seconds=seconds)
-        verdict.failures.extend(str(failure) for failure in evaluator.finish(simulation, result))
-        verdict.ticks, verdict.time = result.ticks, result.time
-    except KeyboardInterrupt:
-        print("graphflow: interrupted", file=sys.stderr)
-        return EXIT_RUNTIME
-    except GraphRuntimeError as error:
-        if args.log_level == "debug":
-            raise
-        verdict.failures.append(f"graphflow: run-time error: {error}")
-        verdict.ticks, verdict.time = simulation.instance.tick_count, simulation.world.time
-    finally:
-        if trace_stream is not None:
-            trace_stream.close()
+    # outputs are written to temporary files renamed into place when the run ends (a failed run keeps
+    # the ticks before the failure); a Ctrl-C or a broken start removes them: never half-written
+    with contextlib.ExitStack() as outputs:
+        outputs.callback(simulation.close)
+        if keys is not None:
+            attach_keyboard(simulation.world, keys)
+        if pad is not None:
+            attach_gamepad(simulation.world, pad)
+        topic_recording = _ros2_run().attach_topics(simulation.world, topics, args.record_topics)
         if topic_recording is not None:
-            topic_recording.close()
-        if video is not None:
-            video.close()
-        simulation.close()
+            outputs.push(lambda kind, _error, _trace: topic_recording.abandon() if kind is not None
+                         else topic_recording.close())
+        simulation.add_listener(evaluator)
+        if args.trace:
+            _open_trace(args.trace, simulation, args.graph, outputs, args.force)
+        if args.record:
+            simulation.world.services.add(_start_recording(args, simulation.world, outputs))
+        if args.gui and args.speed > 0:
+            simulation.add_listener(_RealTimePacer(args.speed))
+        simulation.add_listener(_Progress(simulation, sys.stdout.isatty(),
+                                          simulation.tick_limit(ticks=args.ticks, seconds=seconds)))
+        started = time.perf_counter()
+        try:
+            result = simulation.run(ticks=args.ticks, seconds=seconds)
+            verdict.failures.extend(str(failure) for failure in evaluator.finish(simulation, result))
+            verdict.ticks, verdict.time = result.ticks, result.time
+        except GraphRuntimeError as error:
+            if args.log_level == "debug" or isinstance(error.__cause__, BrokenPipeError):
+                raise   # main() shows the traceback / ends quietly when the reader of our output has gone
+            result = None
+            verdict.failures.append(f"graphflow: run-time error: {error}")
+            verdict.ticks, verdict.time = simulation.instance.tick_count, simulation.world.time
     for line in verdict.failures:
         print(line, file=sys.stderr)
     summary = verdict.summary()
@@ -218,24 +225,39 @@ def _check_recording(args, document) -> None:
     """Refuse a recording that cannot be made before the run starts, not after it ends."""
     if document.settings.get("stage") is None:
         raise BadInput(f"{args.graph}: --record needs a graph with a stage (settings.stage); this one has no scene")
-    from .physics.recorder import RecordingError, check_encoder
+    from .physics.recorder import RecordingError, check_encoder, video_kind
+    from .preflight import require_viz
 
     try:
+        kind = video_kind(args.record)
+        require_viz(f"--record {args.record}", "PIL")
         check_encoder(args.record)
     except RecordingError as error:
         raise BadInput(str(error)) from None
+    _refuse_existing(args.record, args.force, folder=kind == "frames")
 
 
-def _start_recording(args, world):
-    from .physics.recorder import Camera, RecordingError, VideoRecorder
+def _refuse_existing(path: str, force: bool, folder: bool = False) -> None:
+    try:
+        refuse_existing(path, force, folder=folder)
+    except FileProblem as error:
+        raise BadInput(str(error)) from None
+
+
+def _start_recording(args, world, outputs: contextlib.ExitStack):
+    from .physics.recorder import Camera, RecordingError, VideoRecorder, video_kind
 
     camera = Camera(args.camera_target, args.camera_distance, args.camera_yaw, args.camera_pitch)
+    folder = video_kind(args.record) == "frames"
     try:
-        return VideoRecorder(world, args.record, fps=args.fps, size=args.size, camera=camera)
+        temporary = outputs.enter_context(atomic_output(args.record, force=args.force, folder=folder))
+        video = VideoRecorder(world, args.record, fps=args.fps, size=args.size, camera=camera, write_to=temporary)
     except RecordingError as error:
         raise BadInput(str(error)) from None
     except OSError as error:
         raise BadInput(f"{args.record}: cannot write the video: {error.strerror or error}") from None
+    outputs.callback(video.close)   # runs before the rename into place (ExitStack unwinds last in, first out)
+    return video
 
 
 def _size(text: str) -> tuple[int, int]:
@@ -255,12 +277,12 @@ def _point(text: str) -> tuple[float, float, float]:
     return values
 
 
-def _open_trace(path: str, simulation, graph: str):
-    """Open the trace file and attach a recorder writing to it; return the file (the caller closes it)."""
+def _open_trace(path: str, simulation, graph: str, outputs: contextlib.ExitStack, force: bool):
     from .trace import TraceRecorder
 
     try:
-        stream = open(path, "w", encoding="utf-8", newline="\n")
+        temporary = outputs.enter_context(atomic_output(path, force=force))
+        stream = outputs.enter_context(open(temporary, "w", encoding="utf-8", newline="\n"))
     except OSError as error:
         raise BadInput(f"{path}: cannot write the trace: {error.strerror}") from None
     TraceRecorder(simulation, stream, graph=graph)
@@ -290,8 +312,13 @@ def command_draw(args) -> int:
         picture_format = draw.format_for(args.output, args.format)
     except ValueError as error:
         raise BadInput(str(error)) from None
+    if picture_format == "png":
+        from .preflight import require_viz
+
+        require_viz("draw --format png", "matplotlib")
     try:
-        draw.write(draw.layout(document), args.output, picture_format)
+        with atomic_output(args.output, force=args.force) as temporary:
+            draw.write(draw.layout(document), temporary, picture_format)
     except OSError as error:
         raise BadInput(f"{args.output}: cannot write the picture: {error.strerror or error}") from None
     print(f"wrote {args.output}")
@@ -299,6 +326,9 @@ def command_draw(args) -> int:
 
 
 def command_plot(args) -> int:
+    from .preflight import require_viz
+
+    require_viz("plot", "matplotlib")
     from .plot import write_timeline
     from .trace import TraceError, read_trace
 
@@ -306,8 +336,12 @@ def command_plot(args) -> int:
         trace = read_trace(args.trace)
     except TraceError as error:
         raise BadInput(str(error)) from None
+    _refuse_existing(args.output, args.force)
     try:
-        drawn = write_timeline(trace, args.output)
+        with atomic_output(args.output, force=args.force) as temporary:
+            drawn = write_timeline(trace, temporary)
+    except FileProblem:
+        raise
     except (OSError, ValueError) as error:
         raise BadInput(f"{args.output}: cannot write the plot: {error}") from None
     for note in drawn.notes:
@@ -327,21 +361,20 @@ def command_test(args) -> int:
 
 def command_validate(args) -> int:
     from .deep_validate import deep_validate
+    from .preflight import file_problems
 
     failed = False
     for path in args.graphs:
-        try:
-            errors, warnings = deep_validate(load_document(path))
-        except GraphError as error:
-            errors, warnings = error.problems, []
-        for problem in warnings:
+        problems, warnings_ = file_problems(path), []
+        if not problems:   # the graph and its stage load: check what the graph names on that stage
+            problems, warnings_ = deep_validate(load_document(path))
+        for problem in warnings_:
             print(f"warning: {problem}", file=sys.stderr)
-        for problem in errors:
+        for problem in problems:
             print(problem, file=sys.stderr)
-        if errors:
-            failed = True
-        else:
+        if not problems:
             print(f"{path}: ok")
+        failed = failed or bool(problems)
     return EXIT_BAD_INPUT if failed else EXIT_OK
 
 
@@ -354,7 +387,7 @@ def command_nodes(args) -> int:
         return EXIT_OK
     width = max(len(t.spec.id) for t in types)
     for node_type in types:
-        summary = node_type.spec.description.split(". ")[0].rstrip(".")
+        summary = first_sentence(node_type.spec.description)
         print(f"{node_type.spec.id:<{width}}  v{node_type.spec.version}  {summary}")
     return EXIT_OK
 
@@ -377,6 +410,16 @@ def _write_node_docs(args) -> int:
     return EXIT_OK
 
 
+_SENTENCE_END = re.compile(r"(?<!\be\.g)(?<!\bi\.e)(?<!\betc)(?<!\bvs)(?<!\.\.)[.!?](?=\s+[^\s.]|\s*$)")
+
+
+def first_sentence(text: str) -> str:
+    """The first sentence of a description, whole (never cut at "e.g." or "..."), without its final period."""
+    match = _SENTENCE_END.search(text)
+    sentence = text[:match.start() + 1] if match else text
+    return " ".join(sentence.split()).rstrip(".")
+
+
 STARTER_GRAPH = {
     "format": "graphflow",
     "formatVersion": [1, 0],
@@ -385,22 +428,21 @@ STARTER_GRAPH = {
     "nodes": [
         {"name": "on_tick", "type": "omni.graph.action.OnTick"},
         {"name": "counter", "type": "omni.graph.action.Counter"},
-        {"name": "print", "type": "omni.graph.ui_nodes.PrintText", "inputs": {"text": "tick"}},
+        {"name": "format_count", "type": "graphflow.FormatText", "inputs": {"format": "tick {value}"}},
+        {"name": "print", "type": "omni.graph.ui_nodes.PrintText"},
     ],
     "connections": [
         {"src": "on_tick.outputs:tick", "dst": "counter.inputs:execIn"},
         {"src": "counter.outputs:execOut", "dst": "print.inputs:execIn"},
+        {"src": "counter.outputs:count", "dst": "format_count.inputs:value"},
+        {"src": "format_count.outputs:text", "dst": "print.inputs:text"},
     ],
 }
 
 
 def command_new(args) -> int:
     target = Path(args.name if args.name.endswith(".json") else f"{args.name}.json")
-    if target.exists():
-        raise BadInput(f"{target}: already exists; not overwriting it")
-    if not target.parent.exists():
-        raise BadInput(f"{target}: folder {target.parent} does not exist")
-    save_document(parse_document(json.loads(json.dumps(STARTER_GRAPH)), str(target)), target)
+    save_document(parse_document(json.loads(json.dumps(STARTER_GRAPH)), str(target)), target, force=args.force)
     print(f"wrote {target}")
     return EXIT_OK
 
@@ -415,8 +457,8 @@ def command_import(args) -> int:
     from .document import dumps
     from .usd.omnigraph import ImportProblem, import_graph
 
-    if args.output and Path(args.output).exists() and not args.force:
-        raise BadInput(f"{args.output}: already exists; not overwriting it (use --force)")
+    if args.output:
+        _refuse_existing(args.output, args.force)
     try:
         result = import_graph(args.stage, graph_path=args.graph, output_path=args.output, skip_unknown=args.skip_unknown)
     except ImportProblem as error:
@@ -430,7 +472,7 @@ def command_import(args) -> int:
     for warning in result.warnings:
         print(f"warning: {warning}", file=sys.stderr)
     if args.output:
-        save_document(result.document, args.output)
+        save_document(result.document, args.output, force=args.force)
         print(f"wrote {args.output}: {len(result.document.nodes)} nodes, {len(result.document.connections)} connections from {result.graph_path}")
     else:
         sys.stdout.write(dumps(result.document))
@@ -445,10 +487,10 @@ def build_parser() -> argparse.ArgumentParser:
     run = commands.add_parser("run", help="run a graph (headless unless --gui)")
     run.add_argument("graph", help="graph JSON file")
     run.add_argument("--ticks", type=_positive_int, help="stop after N ticks")
-    run.add_argument("--seconds", type=_positive_float, help="stop after S simulated seconds")
+    run.add_argument("--seconds", type=_seconds, help="stop after S simulated seconds")
     run.add_argument("--seed", type=int, help="seed for random number generators (default: the graph's scenario seed, else 0)")
     run.add_argument("--gui", action="store_true", help="open the PyBullet window (paced to real time, see --speed)")
-    run.add_argument("--speed", type=float, default=1.0, metavar="X",
+    run.add_argument("--speed", type=_finite_float, default=1.0, metavar="X",
                      help="with --gui: run at X times real time (default 1; 0 = as fast as possible)")
     run.add_argument("--keys", metavar="FILE",
                      help='scripted keyboard for OnKeyboardInput nodes: JSON {"keys": ["A@1.5", "Up@2-3", ...]}')
@@ -481,11 +523,12 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--trace", metavar="FILE", help="write what happens every tick as JSON Lines (docs/trace.md)")
     run.add_argument("--record", metavar="FILE", help="record a video: .gif, .mp4 (needs ffmpeg) or a folder of PNG frames")
     run.add_argument("--fps", type=_positive_float, default=15.0, help="video frames per simulated second (default 15)")
+    run.add_argument("--force", action="store_true", help="overwrite existing --trace / --record outputs")
     run.add_argument("--size", type=_size, default=(480, 360), metavar="WxH", help="video size in pixels (default 480x360)")
     run.add_argument("--camera-target", type=_point, metavar="X,Y,Z", help="point the camera looks at (default: the scene's centre)")
     run.add_argument("--camera-distance", type=_positive_float, metavar="M", help="camera distance (default: fit the scene)")
-    run.add_argument("--camera-yaw", type=float, default=50.0, metavar="DEG", help="camera yaw in degrees (default 50)")
-    run.add_argument("--camera-pitch", type=float, default=-30.0, metavar="DEG", help="camera pitch in degrees (default -30)")
+    run.add_argument("--camera-yaw", type=_finite_float, default=50.0, metavar="DEG", help="camera yaw in degrees (default 50)")
+    run.add_argument("--camera-pitch", type=_finite_float, default=-30.0, metavar="DEG", help="camera pitch in degrees (default -30)")
     run.set_defaults(handler=command_run)
 
     trace = commands.add_parser("trace", help="work with run traces (graphflow run --trace)")
@@ -519,12 +562,13 @@ def build_parser() -> argparse.ArgumentParser:
 
     new = commands.add_parser("new", help="write a starter graph")
     new.add_argument("name", help="file name (.json is added if missing)")
+    new.add_argument("--force", action="store_true", help="overwrite an existing file")
     new.set_defaults(handler=command_new)
 
     stage = commands.add_parser("stage", help="show what the importer makes of a USD stage")
     stage.add_argument("stage", help=".usda / .usd file")
     stage.add_argument("--json", action="store_true", help="print one JSON object")
-    stage.add_argument("--simulate", type=_positive_float, metavar="SECONDS",
+    stage.add_argument("--simulate", type=_seconds, metavar="SECONDS",
                        help="step the stage with drives at their targets and report how far bodies moved")
     stage.set_defaults(handler=command_stage)
 
@@ -541,11 +585,13 @@ def build_parser() -> argparse.ArgumentParser:
     draw.add_argument("graph", help="graph JSON file")
     draw.add_argument("-o", "--output", required=True, metavar="FILE", help="picture file (.svg, .png, .mmd, .dot)")
     draw.add_argument("--format", choices=["svg", "png", "mermaid", "dot"], help="picture format (default: from the suffix)")
+    draw.add_argument("--force", action="store_true", help="overwrite an existing picture")
     draw.set_defaults(handler=command_draw)
 
     plot = commands.add_parser("plot", help="plot a run trace: controller phase, gripper status, held height, force")
     plot.add_argument("trace", help="trace file written by graphflow run --trace")
     plot.add_argument("-o", "--output", required=True, metavar="FILE", help="image file (.png, .svg or .pdf)")
+    plot.add_argument("--force", action="store_true", help="overwrite an existing image")
     plot.set_defaults(handler=command_plot)
 
     from .sweep import add_sweep_parser
@@ -555,34 +601,86 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+# argparse reports a type function's ArgumentTypeError as "argument --option: message"
 def _positive_int(text: str) -> int:
-    value = int(text)
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
     if value <= 0:
-        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text}")
+        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
+    return value
+
+
+def _finite_float(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"expected a finite number, got {text!r}")
     return value
 
 
 def _positive_float(text: str) -> float:
-    value = float(text)
+    value = _finite_float(text)
     if not value > 0:
-        raise argparse.ArgumentTypeError(f"expected a positive number, got {text}")
+        raise argparse.ArgumentTypeError(f"expected a positive number, got {text!r}")
     return value
 
 
+def _seconds(text: str) -> float:
+    value = _positive_float(text)
+    if value > MAX_SECONDS:
+        raise argparse.ArgumentTypeError(f"expected at most {MAX_SECONDS:g} simulated seconds, got {text!r}")
+    return value
+
+
+def _one_line_warning(message, category, filename, lineno, line=None) -> str:
+    return f"warning: {message}\n"
+
+
+def _interrupt(_signal_number, _frame):
+    raise KeyboardInterrupt
+
+
 def main(argv: list[str] | None = None) -> int:
+    on_main_thread = threading.current_thread() is threading.main_thread()
+    # `kill` cleans up like Ctrl-C: no half-written outputs
+    previous_handler = signal.signal(signal.SIGTERM, _interrupt) if on_main_thread else None
+    previous_format = warnings.formatwarning
+    try:
+        return _main(argv)
+    except KeyboardInterrupt:   # Ctrl-C at any moment: outputs in progress were removed on the way out
+        print("graphflow: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    finally:
+        warnings.formatwarning = previous_format
+        if previous_handler is not None:
+            signal.signal(signal.SIGTERM, previous_handler)
+
+
+def _main(argv: list[str] | None) -> int:
     args = build_parser().parse_args(argv)
     level = getattr(args, "log_level", "warning")
     logging.basicConfig(level=level.upper(), format="%(levelname)s %(name)s: %(message)s", stream=sys.stderr)
+    warnings.formatwarning = _one_line_warning
     debug = level == "debug"
+    from .preflight import MissingExtra
+
     try:
         return args.handler(args)
     except BrokenPipeError:  # output piped into head & co.: not an error
         sys.stderr.close()
         return EXIT_OK
-    except BadInput as error:
-        print(f"graphflow: error: {error}", file=sys.stderr)
+    except (BadInput, FileProblem, MissingExtra) as error:
+        for line in str(error).splitlines():
+            print(f"graphflow: error: {line}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except GraphRuntimeError as error:
+        if isinstance(error.__cause__, BrokenPipeError):   # a print node's reader (head) has gone: done
+            sys.stderr.close()
+            return EXIT_OK
         if debug:
             raise
         print(f"graphflow: run-time error: {error}", file=sys.stderr)

@@ -35,7 +35,8 @@ def run_stage_command(stage_path: str, as_json: bool, simulate_seconds: float | 
             report = stage_report(description)
             simulation = simulate_report(stage_path, simulate_seconds) if simulate_seconds is not None else None
     except StageError as error:
-        print(f"graphflow stage: {error}", file=sys.stderr)
+        for problem in error.problems:
+            print(f"graphflow stage: {problem}", file=sys.stderr)
         return EXIT_BAD_INPUT
     if as_json:
         if simulation is not None:

@@ -15,6 +15,7 @@ document shares that one immutable compiled graph (benchmarks/instances.py).
 from __future__ import annotations
 
 import difflib
+import math
 from typing import Any
 
 import networkx as nx
@@ -25,7 +26,10 @@ from .registry import Registry, default_registry
 from .spec import NodeType
 from .types import TypeMismatch, can_connect, parse_type
 
-__all__ = ["compile", "GraphError", "Problem"]
+__all__ = ["compile", "problems", "GraphError", "Problem"]
+
+MAX_DURATION = 1e7      # simulated seconds (116 days): longer is a typo, not a run (also the CLI's --seconds limit)
+MAX_HINTED_TYPES = 50   # unknown node types per file that get a "did you mean" hint (the search costs ~1 ms each)
 
 
 def compile(document: GraphDocument, registry: Registry | None = None) -> CompiledGraph:
@@ -41,6 +45,16 @@ def compile(document: GraphDocument, registry: Registry | None = None) -> Compil
     return compiled
 
 
+def problems(document: GraphDocument, registry: Registry | None = None) -> list[Problem]:
+    """Every problem compiling *document* finds, without building anything (for partial documents)."""
+    compilation = _Compilation(document, registry or default_registry())
+    node_types, _authored = compilation._nodes()
+    compilation._settings()
+    compilation._variables()
+    compilation._connections(node_types)
+    return compilation.problems
+
+
 class _Compilation:
     """The single pass: each check keeps what it resolved, and the tables are built from that."""
 
@@ -53,6 +67,7 @@ class _Compilation:
     def run(self) -> CompiledGraph:
         document = self.document
         node_types, authored = self._nodes()
+        self._settings()
         variable_types, variable_defaults = self._variables()
         pulls, exec_edges, data_graph = self._connections(node_types)
         if self.problems:
@@ -71,6 +86,7 @@ class _Compilation:
         node_types: list[NodeType | None] = []
         authored: list[tuple[tuple[str, Any], ...]] = []
         seen: set[str] = set()
+        unknown: set[str] = set()
         for node in self.document.nodes:
             if node.name in seen:
                 self._problem("duplicate node name", node=node.name)
@@ -78,7 +94,8 @@ class _Compilation:
             node_type = self.registry.get(node.type)
             node_types.append(node_type)
             if node_type is None:
-                hint = self.registry.suggest(node.type)
+                unknown.add(node.type)
+                hint = self.registry.suggest(node.type) if len(unknown) <= MAX_HINTED_TYPES else None
                 self._problem(f"unknown node type {node.type!r}" + (f" (did you mean {hint!r}?)" if hint else ""),
                               node=node.name)
                 authored.append(())
@@ -113,6 +130,20 @@ class _Compilation:
                 self._problem(message, node=node.name)
         return tuple(values)
 
+    # ---------------------------------------------------------------- settings
+
+    def _settings(self) -> None:
+        """Numbers the schema lets through but a run cannot use (NaN and infinity pass its range checks,
+        and a duration of 1e308 s would never end)."""
+        settings = self.document.settings
+        for name in ("timeStep", "duration", "substeps", "stepBudget"):
+            value = settings.get(name)
+            if isinstance(value, float) and not math.isfinite(value):
+                self._problem(f"settings/{name}: {value!r} is not a finite number")
+        duration = settings.get("duration")
+        if isinstance(duration, (int, float)) and math.isfinite(duration) and duration > MAX_DURATION:
+            self._problem(f"settings/duration: {duration!r} s is more than {MAX_DURATION:g} simulated seconds")
+
     # ---------------------------------------------------------------- variables
 
     def _variables(self) -> tuple[dict, dict]:
@@ -126,6 +157,10 @@ class _Compilation:
                 attr_type = parse_type(variable.type)
             except ValueError as error:
                 self._problem(str(error), attribute=variable.name, kind="variable")
+                continue
+            if attr_type.is_execution:
+                self._problem("a variable cannot be of execution type (exec pulses are not values)",
+                              attribute=variable.name, kind="variable")
                 continue
             try:
                 value = attr_type.default_value() if variable.default is None else attr_type.coerce(variable.default)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import json
 import os
-import tempfile
+from dataclasses import replace
 from functools import lru_cache
 from importlib import resources
 from pathlib import Path
@@ -18,6 +18,7 @@ from typing import Any
 
 from .model import (FORMAT_NAME, FORMAT_VERSION, Connection, GraphDocument, GraphError, NodeDoc, Problem,  # noqa: F401
                     Variable, _frozen)
+from .files import FileProblem, read_json, write_text
 from .registry import Registry
 
 
@@ -42,10 +43,12 @@ def _schema_problems(data: Any, source: str) -> list[Problem]:
             except (IndexError, AttributeError, KeyError, TypeError):
                 node_name = None
         location = "/".join(str(p) for p in path) or "document"
-        if node_name:
-            problems.append(Problem(source, f"{location}: {error.message}", node=node_name, attribute=None))
-        else:
-            problems.append(Problem(source, f"{location}: {error.message}"))
+        message = error.message
+        if error.validator == "pattern" and path and path[-1] == "name":
+            message = f"{error.instance!r} is not a name (letters, digits, '_' and '-', not starting with a digit or '-')"
+        if not isinstance(node_name, str):
+            node_name = None
+        problems.append(Problem(source, f"{location}: {message}", node=node_name, path=tuple(path)))
     return problems
 
 
@@ -53,7 +56,7 @@ def parse_document(data: Any, source: str = "<graph>", registry: Registry | None
     """Build and check a document from parsed JSON (schema, then ``graphflow.compiler.compile``); raise GraphError listing every problem."""
     problems = _schema_problems(data, source)
     if problems:
-        raise GraphError(problems)
+        raise GraphError(problems + _problems_of_valid_parts(data, source, registry, problems))
     major = data["formatVersion"][0]
     if major != FORMAT_VERSION[0]:
         raise GraphError([Problem(source, f"formatVersion {data['formatVersion']} is not supported (this runtime reads {FORMAT_VERSION[0]}.x)")])
@@ -71,10 +74,39 @@ def parse_document(data: Any, source: str = "<graph>", registry: Registry | None
         checks=tuple(_frozen(check) for check in data.get("checks", [])),
         scenario=_frozen(data.get("scenario", {})),
     )
-    from .compiler import compile   # checking a document is compiling it (the compiler imports this module)
+    from .compiler import compile   # checking a document is compiling it
 
     compile(document, registry)
     return document
+
+
+def _problems_of_valid_parts(data: Any, source: str, registry: Registry | None, schema_problems) -> list[Problem]:
+    """Semantic problems of the entries the schema accepted, so one pass lists both kinds."""
+    if not isinstance(data, dict) or not isinstance(data.get("nodes"), list):
+        return []
+    from .compiler import problems
+
+    broken = {tuple(p.path[:2]) for p in schema_problems if len(p.path) >= 2}
+    broken_sections = {p.path[0] for p in schema_problems if len(p.path) == 1}
+
+    def kept(section: str) -> list:
+        entries = data.get(section, [])
+        if section in broken_sections or not isinstance(entries, list):
+            return []
+        return [entry for index, entry in enumerate(entries) if (section, index) not in broken]
+
+    skipped = {entry.get("name") for index, entry in enumerate(data["nodes"])
+               if ("nodes", index) in broken and isinstance(entry, dict)}
+    settings = data.get("settings", {})
+    document = GraphDocument(
+        nodes=tuple(NodeDoc(n["name"], n["type"], n.get("typeVersion"), _frozen(n.get("inputs", {})))
+                    for n in kept("nodes")),
+        connections=tuple(_parse_connection(c) for c in kept("connections")),
+        variables=tuple(Variable(v["name"], v["type"], v.get("default")) for v in kept("variables")),
+        settings=_frozen(settings if isinstance(settings, dict) and "settings" not in broken_sections
+                         and not any(p.path[:1] == ("settings",) for p in schema_problems) else {}),
+        source=source)
+    return [problem for problem in problems(document, registry) if problem.node not in skipped]
 
 
 def _parse_connection(entry: dict) -> Connection:
@@ -84,19 +116,12 @@ def _parse_connection(entry: dict) -> Connection:
 
 
 def load_document(path: str | os.PathLike, registry: Registry | None = None) -> GraphDocument:
-    """Read and validate a graph file."""
-    source = str(path)
+    """Read (strict JSON: see graphflow.files) and check a graph file."""
     try:
-        text = Path(path).read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise GraphError([Problem(source, "file not found")]) from None
-    except (OSError, UnicodeDecodeError) as error:
-        raise GraphError([Problem(source, f"cannot read file: {error}")]) from None
-    try:
-        data = json.loads(text)
-    except json.JSONDecodeError as error:
-        raise GraphError([Problem(source, f"malformed JSON at line {error.lineno} column {error.colno}: {error.msg}")]) from None
-    return parse_document(data, source, registry)
+        data = read_json(path)
+    except FileProblem as error:
+        raise GraphError([Problem(str(path), error.reason)]) from None
+    return parse_document(data, str(path), registry)
 
 
 def dumps(document: GraphDocument) -> str:
@@ -104,18 +129,21 @@ def dumps(document: GraphDocument) -> str:
     return json.dumps(document.to_json(), indent=2, sort_keys=True, ensure_ascii=False) + "\n"
 
 
-def save_document(document: GraphDocument, path: str | os.PathLike) -> None:
-    """Write atomically: a temporary file in the same folder, then rename over the target."""
-    target = Path(path)
-    text = dumps(document)
-    handle, temporary = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent or ".")
-    try:
-        with os.fdopen(handle, "w", encoding="utf-8") as stream:
-            stream.write(text)
-            stream.flush()
-            os.fsync(stream.fileno())
-        os.replace(temporary, target)
-    except BaseException:
-        if os.path.exists(temporary):
-            os.unlink(temporary)
-        raise
+def save_document(document: GraphDocument, path: str | os.PathLike, *, force: bool = True) -> None:
+    """Write atomically (graphflow.files.write_text): never half-written, over an existing file only with *force*.
+
+    A relative ``settings.stage`` is rebased onto the new file's folder, so the saved graph still finds its stage.
+    """
+    write_text(path, dumps(rebased(document, path)), force=force)
+
+
+def rebased(document: GraphDocument, path: str | os.PathLike) -> GraphDocument:
+    """*document* as it must read when saved at *path*: its relative stage path made relative to that folder."""
+    stage = document.settings.get("stage")
+    if not isinstance(stage, str) or stage.startswith("asset:") or Path(stage).is_absolute():
+        return document
+    folder = Path(path).resolve().parent
+    if folder == document.base_dir:
+        return document
+    moved = Path(os.path.relpath(document.base_dir / stage, folder)).as_posix()
+    return replace(document, settings=_frozen({**document.settings, "stage": moved}), source=str(path))

@@ -28,7 +28,9 @@ import networkx as nx
 from .model import GraphDocument
 from .registry import Registry
 from .spec import NodeSpec, NodeType
-from .types import ExecState
+from .files import one_line
+from .types import MAX_VALUE_DEPTH, ExecState, nesting_exceeds
+from .messages import usd_message
 from .world import DEFAULT_TIME_STEP, ClockWorld, World
 
 DEFAULT_STEP_BUDGET = 100_000
@@ -51,7 +53,7 @@ class GraphRuntimeError(RuntimeError):
 
     def __init__(self, message: str, node: str | None = None):
         self.node = node
-        super().__init__(f"node '{node}': {message}" if node else message)
+        super().__init__(one_line(f"node '{node}': {message}" if node else message))
 
 
 class StepBudgetExceeded(GraphRuntimeError):
@@ -288,7 +290,12 @@ class NodeDatabase:
         instance = self._instance
         if name not in instance.variables:
             self.error(f"no graph variable named {name!r}")
-        instance.variables[name] = instance.compiled.variable_types[name].coerce(value)
+        variable_type = instance.compiled.variable_types[name]
+        value = variable_type.coerce(value)
+        # an `any` variable fed (x, x) every tick nests one level deeper a tick; printing or tracing it doubles
+        if variable_type.is_any and isinstance(value, tuple) and nesting_exceeds(value):
+            self.error(f"variable {name!r}: value nests more than {MAX_VALUE_DEPTH} levels deep")
+        instance.variables[name] = value
 
     def error(self, message: str):
         raise GraphRuntimeError(message, self.node_name)
@@ -503,7 +510,7 @@ class GraphInstance:
 
     def _failure(self, index: int, error: Exception) -> GraphRuntimeError:
         node = self.compiled.nodes[index]
-        return GraphRuntimeError(f"{node.spec.id} failed: {type(error).__name__}: {error}", node.name)
+        return GraphRuntimeError(f"{node.spec.id} failed: {type(error).__name__}: {usd_message(error)}", node.name)
 
     def _budget_error(self) -> StepBudgetExceeded:
         busiest = Counter({node.name: count for node, count in zip(self.compiled.nodes, self.compute_counts)})

@@ -27,7 +27,6 @@ a scripted timeline connects every pad it names.
 """
 from __future__ import annotations
 
-import json
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -153,10 +152,12 @@ def parse_pad_spec(text: str) -> PadChange:
 
 def load_pad_timeline(path: str | Path) -> list[PadChange]:
     """Read a gamepad file: ``{"gamepad": [{"element": ..., "time": s, "value": v, "pad": 0}, ...]}``."""
+    from .files import FileProblem, read_json
+
     try:
-        data = json.loads(Path(path).read_text())
-    except (OSError, json.JSONDecodeError) as error:
-        raise PadSpecError(f"{path}: {error}") from None
+        data = read_json(path)   # strict JSON, regular files only (never /dev/zero)
+    except FileProblem as error:
+        raise PadSpecError(str(error)) from None
     entries = data.get("gamepad") if isinstance(data, dict) else None
     if not isinstance(entries, list) or not all(isinstance(entry, dict) for entry in entries):
         raise PadSpecError(f"{path}: expected an object with a 'gamepad' list of "

@@ -21,7 +21,6 @@ Key names are Kit's ``carb.input.KeyboardInput`` tokens (``A``, ``Key1``,
 """
 from __future__ import annotations
 
-import json
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -146,10 +145,12 @@ def parse_key_spec(text: str) -> list[KeyAction]:
 
 def load_key_timeline(path: str | Path) -> list[KeyAction]:
     """Read a key file: ``{"keys": ["A@1.5", "Up@2.0-3.0", ...]}`` (same syntax as ``--key``)."""
+    from .files import FileProblem, read_json
+
     try:
-        data = json.loads(Path(path).read_text())
-    except (OSError, json.JSONDecodeError) as error:
-        raise KeySpecError(f"{path}: {error}") from None
+        data = read_json(path)   # strict JSON, regular files only (never /dev/zero)
+    except FileProblem as error:
+        raise KeySpecError(str(error)) from None
     entries = data.get("keys") if isinstance(data, dict) else None
     if not isinstance(entries, list) or not all(isinstance(entry, str) for entry in entries):
         raise KeySpecError(f"{path}: expected an object with a 'keys' list of strings such as \"A@1.5\"")

@@ -11,6 +11,8 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
 
+from .files import one_line
+
 FORMAT_NAME = "graphflow"
 FORMAT_VERSION = (1, 0)
 
@@ -24,6 +26,7 @@ class Problem:
     node: str | None = None
     attribute: str | None = None
     kind: str = "input"  # how the attribute is named in the message: input, output, connection, variable
+    path: tuple = ()     # where in the JSON a schema problem is (("nodes", 3, "name")); () for the others
 
     def __str__(self) -> str:
         locator = []
@@ -32,8 +35,8 @@ class Problem:
         if self.attribute is not None:
             locator.append(f"{self.kind} '{self.attribute}'")
         if locator:
-            return f"{self.file}: {' '.join(locator)}: {self.message}"
-        return f"{self.file}: {self.message}"
+            return one_line(f"{self.file}: {' '.join(locator)}: {self.message}")
+        return one_line(f"{self.file}: {self.message}")
 
 
 class GraphError(ValueError):

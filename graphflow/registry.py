@@ -26,6 +26,7 @@ class Registry:
     def __init__(self):
         self._types: dict[str, NodeType] = {}
         self._aliases: dict[str, str] = {}
+        self._suggestions: dict[str, str | None] = {}
 
     def register(self, node_type: NodeType) -> None:
         spec = node_type.spec
@@ -34,6 +35,7 @@ class Registry:
         self._types[spec.id] = node_type
         for alias in spec.aliases:
             self._aliases[alias] = spec.id
+        self._suggestions.clear()
 
     def register_module(self, module: ModuleType) -> bool:
         """Register a node module; returns False when the module declares no node type."""
@@ -46,12 +48,23 @@ class Registry:
                                module=module.__name__))
         return True
 
-    def register_package(self, package: ModuleType) -> None:
-        """Register every public module of a package (modules starting with ``_`` are helpers)."""
+    def register_package(self, package: ModuleType, on_error=None) -> None:
+        """Register every public module of a package (modules starting with ``_`` are helpers).
+
+        With *on_error* (third-party packages), a module that fails to import or register is
+        passed to ``on_error(module_name, error)`` and skipped instead of failing the whole package.
+        """
         for info in sorted(pkgutil.iter_modules(package.__path__), key=lambda i: i.name):
             if info.name.startswith("_"):
                 continue
-            self.register_module(importlib.import_module(f"{package.__name__}.{info.name}"))
+            name = f"{package.__name__}.{info.name}"
+            if on_error is None:
+                self.register_module(importlib.import_module(name))
+                continue
+            try:
+                self.register_module(importlib.import_module(name))
+            except Exception as error:
+                on_error(name, error)
 
     def resolve_id(self, type_id: str) -> str | None:
         if type_id in self._types:
@@ -63,26 +76,39 @@ class Registry:
         return self._types.get(resolved) if resolved else None
 
     def suggest(self, type_id: str) -> str | None:
-        """The closest known id, for 'did you mean' hints."""
-        matches = difflib.get_close_matches(type_id, list(self._types) + list(self._aliases), n=1, cutoff=0.6)
-        return matches[0] if matches else None
+        """The closest known id, for 'did you mean' hints (remembered: a file repeats its misspellings)."""
+        if type_id not in self._suggestions:
+            matches = difflib.get_close_matches(type_id, list(self._types) + list(self._aliases), n=1, cutoff=0.6)
+            self._suggestions[type_id] = matches[0] if matches else None
+        return self._suggestions[type_id]
 
     def types(self) -> list[NodeType]:
         return [self._types[i] for i in sorted(self._types)]
 
 
 def _load_entry_point(registry: Registry, entry_point) -> None:
+    """Register a third-party node package; whatever is broken in it is a warning naming the package
+    and module, and the built-ins (and the package's other modules) keep working."""
+    package = getattr(getattr(entry_point, "dist", None), "name", None) or getattr(entry_point, "name", entry_point.value)
+
+    def skip(module: str, error: Exception) -> None:
+        reason = " ".join(f"{type(error).__name__}: {error}".split())
+        log.warning("node package %s: module %s skipped: %s", package, module, reason)
+
     try:
         loaded = entry_point.load()
     except Exception as error:  # a broken plug-in must not take the built-ins down with it
-        log.warning("node package %s could not be loaded: %s", entry_point.value, error)
+        skip(entry_point.value, error)
         return
     if isinstance(loaded, ModuleType) and hasattr(loaded, "__path__") and not hasattr(loaded, "SPEC"):
-        registry.register_package(loaded)
+        registry.register_package(loaded, on_error=skip)
     elif isinstance(loaded, ModuleType):
-        registry.register_module(loaded)
+        try:
+            registry.register_module(loaded)
+        except Exception as error:
+            skip(loaded.__name__, error)
     else:
-        log.warning("entry point %s is not a node module or package", entry_point.value)
+        log.warning("node package %s: entry point %s is not a node module or package", package, entry_point.value)
 
 
 _default: Registry | None = None

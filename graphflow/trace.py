@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import platform
 import sys
 from dataclasses import dataclass
@@ -118,6 +119,13 @@ def sample_grippers(world) -> dict[str, GripperSample]:
     return samples
 
 
+def initial_grippers(world) -> list[str]:
+    """The surface grippers that exist when a run starts: the stage's gripper prims and any a node made already."""
+    description = getattr(world, "description", None)
+    on_stage = [gripper.path for gripper in getattr(description, "surface_grippers", ())]
+    return sorted(set(on_stage) | set(sample_grippers(world)))
+
+
 def _holding_force(manager, path: str) -> float | None:
     """Magnitude of the largest force an attachment constraint of this gripper carries (N)."""
     component = manager.component(path)
@@ -206,14 +214,14 @@ class TraceRecorder:
         header = {
             "format": TRACE_FORMAT,
             "version": TRACE_VERSION,
-            "graph": graph if graph is not None else document.source,
+            "graph": same_path_text(graph if graph is not None else document.source),
             "description": document.description,
             "stage": document.settings.get("stage"),
             "timeStep": world.time_step,
             "nodes": {node.name: node.spec.id for node in compiled.nodes},
             "outputs": self._outputs,
             "phases": phase_outputs(compiled),
-            "grippers": sorted(sample_grippers(world)),
+            "grippers": initial_grippers(world),
             "versions": loaded_versions(),
         }
         self.stream.write(dumps_record(header) + "\n")
@@ -265,12 +273,12 @@ class Trace:
 
 def read_trace(path: str | Path) -> Trace:
     """Parse a trace file; raise TraceError naming the line when it is not a trace."""
+    from .files import FileProblem, read_text
+
     try:
-        lines = Path(path).read_text(encoding="utf-8").splitlines()
-    except FileNotFoundError:
-        raise TraceError(f"{path}: file not found") from None
-    except (OSError, UnicodeDecodeError) as error:
-        raise TraceError(f"{path}: cannot read file: {error}") from None
+        lines = read_text(path).splitlines()   # regular files only: never reads /dev/zero forever
+    except FileProblem as error:
+        raise TraceError(str(error)) from None
     records = []
     for number, line in enumerate(lines, start=1):
         try:
@@ -292,6 +300,11 @@ def read_trace(path: str | Path) -> Trace:
 
 
 # ---------------------------------------------------------------- comparing
+
+def same_path_text(path):
+    """One spelling per path, so ``graphs/x.json`` and ``./graphs/x.json`` name the same graph in traces."""
+    return os.path.normpath(path).replace(os.sep, "/") if isinstance(path, str) and path else path
+
 
 HEADER_FIELDS_IGNORED_BY_DIFF = ("versions",)   # the same run on another machine is still the same run
 
@@ -321,8 +334,9 @@ def _shown(value) -> str:
 
 def first_difference(left: Trace, right: Trace) -> Difference | None:
     """The first differing field: header (except versions), then tick by tick, fields in file order."""
-    left_header = {k: v for k, v in left.header.items() if k not in HEADER_FIELDS_IGNORED_BY_DIFF}
-    right_header = {k: v for k, v in right.header.items() if k not in HEADER_FIELDS_IGNORED_BY_DIFF}
+    left_header, right_header = ({key: same_path_text(value) if key == "graph" else value
+                                  for key, value in trace.header.items() if key not in HEADER_FIELDS_IGNORED_BY_DIFF}
+                                 for trace in (left, right))
     found = _first_field(left_header, right_header, "")
     if found is not None:
         return Difference(0, None, found[0], found[1], found[2])

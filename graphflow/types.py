@@ -15,6 +15,7 @@ attributes and PyBullet.
 """
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass
 from enum import IntEnum
@@ -54,6 +55,10 @@ TUPLE_ROLES = {"quatd": "double", "quatf": "float", "quath": "half",
                "vectord": "double", "vectorf": "float", "pointd": "double", "pointf": "float",
                "normald": "double", "normalf": "float", "colord": "double", "colorf": "float",
                "matrixd": "double"}
+
+# the values each scalar type can hold (OmniGraph's int and uint are 32-bit, float is 32-bit IEEE)
+INTEGER_RANGES = {"int": (-2**31, 2**31 - 1), "int64": (-2**63, 2**63 - 1), "uint": (0, 2**32 - 1), "uint64": (0, 2**64 - 1)}
+REAL_LIMITS = {"float": 3.4028234663852886e38, "half": 65504.0}
 
 _TYPE_PATTERN = re.compile(r"^(?P<base>[a-z0-9]+)(\[(?P<n>\d+)\])?(?P<array>\[\])?$")
 
@@ -135,19 +140,30 @@ def _coerce_scalar(kind: str, name: str, value):
         if isinstance(value, bool):
             return value
     elif kind in ("int", "uint"):
-        if isinstance(value, int) and not isinstance(value, bool):
-            if kind == "uint" and value < 0:
-                raise TypeMismatch(f"expected {name} (>= 0), got {value}")
-            return value
         if isinstance(value, float) and value.is_integer():
-            return int(value)
+            value = int(value)
+        if isinstance(value, int) and not isinstance(value, bool):
+            low, high = INTEGER_RANGES.get(name, (None, None))
+            if low is not None and not low <= value <= high:
+                raise TypeMismatch(f"expected {name} ({low} to {high}), got {_show(value)}")
+            return value
     elif kind == "real":
-        if isinstance(value, (int, float)) and not isinstance(value, bool):
-            return float(value)
+        if isinstance(value, int) and not isinstance(value, bool):
+            try:
+                value = float(value)
+            except OverflowError:
+                raise TypeMismatch(f"expected {name}, got a number too large for it") from None
         if isinstance(value, str) and value.lower() in ("nan", "inf", "-inf", "infinity", "-infinity"):
-            return float(value)
+            value = float(value)
+        if isinstance(value, float):
+            limit = REAL_LIMITS.get(name)
+            if limit is not None and math.isfinite(value) and abs(value) > limit:
+                raise TypeMismatch(f"expected {name} (magnitude up to {limit:g}), got {_show(value)}")
+            return value
     elif kind == "str":
         if isinstance(value, str):
+            if name == "path" and value and not value.startswith("/"):
+                raise TypeMismatch(f"expected an absolute prim path (starting with '/'), got {_show(value)}")
             return value
     raise TypeMismatch(f"expected {name}, got {_show(value)}")
 
@@ -215,3 +231,20 @@ def can_connect(source: AttrType, destination: AttrType) -> bool:
         return True
     numeric = ("int", "uint", "real")
     return source_kind in numeric and destination_kind in numeric and destination_kind != "bool"
+
+
+MAX_VALUE_DEPTH = 16   # nested tuples in one value; double[3][] is 2, a value fed back into itself grows by 1 a tick
+
+
+def nesting_exceeds(value, limit: int = MAX_VALUE_DEPTH) -> bool:
+    """Whether tuples nest deeper than *limit* in *value* (each shared tuple visited once: linear time)."""
+    pending, seen = [(value, 0)], set()
+    while pending:
+        item, depth = pending.pop()
+        if isinstance(item, tuple) and id(item) not in seen:
+            if depth >= limit:
+                return True
+            seen.add(id(item))
+            pending.extend((child, depth + 1) for child in item)
+    return False
+

@@ -57,11 +57,34 @@ def compute(db):
         if len(values) != len(indices):
             db.error(f"inputs:{attribute} has {len(values)} values for {len(indices)} joints of {path}; "
                      f"no command applied")
+        if any(math.isinf(value) for value in values):
+            db.error(f"inputs:{attribute} {list(values)} holds an infinite target; no command applied "
+                     f"(targets must be finite; NaN leaves a joint alone)")
         commands[keyword] = [(index, value) for index, value in zip(indices, values) if not math.isnan(value)]
     for keyword, pairs in commands.items():
         if pairs:
             db.world.set_joint_targets(path, [index for index, _ in pairs], **{keyword: [v for _, v in pairs]})
     db.outputs.execOut = ExecState.ENABLED
+
+
+def validate(node_name, values):
+    """Authored commands must be finite (NaN, which leaves a joint alone, is fine); robotPath absolute."""
+    problems = [f"inputs:{attribute}: {list(values[attribute])} holds an infinite target (NaN leaves a joint "
+                f"alone; infinity is no target)"
+                for attribute, _keyword in COMMANDS
+                if any(isinstance(v, (int, float)) and math.isinf(v) for v in _floats(values.get(attribute, ())))]
+    robot_path = values.get("robotPath", "")
+    if isinstance(robot_path, str) and robot_path and not robot_path.startswith("/"):
+        problems.append(f"inputs:robotPath: {robot_path!r} is not an absolute prim path (one starts with '/')")
+    return problems
+
+
+def _floats(values):
+    for value in values if isinstance(values, (list, tuple)) else ():
+        try:
+            yield float(value)
+        except (TypeError, ValueError):
+            continue
 
 
 def _selected_joints(db, path):

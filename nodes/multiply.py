@@ -3,7 +3,7 @@ import operator
 
 from graphflow.spec import Attribute, NodeSpec
 
-from graphflow_nodes._math import compute_binary
+from graphflow_nodes._math import MathError, compute_binary
 
 SPEC = NodeSpec(
     id="omni.graph.nodes.Multiply",
@@ -25,5 +25,18 @@ SPEC = NodeSpec(
 )
 
 
+INTEGER_RANGE = (-(2**63), 2**64)   # what int64 / uint64 hold; Python's own ints never overflow
+
+
+def _multiply(a, b):
+    """a * b; an integer product beyond 64 bits is an error (squaring a variable every tick would
+    otherwise grow it to millions of digits and slow every tick down to a halt)."""
+    product = operator.mul(a, b)
+    if type(product) is int and not INTEGER_RANGE[0] <= product < INTEGER_RANGE[1]:
+        raise MathError(f"integer overflow: the product of {a.bit_length()}-bit and {b.bit_length()}-bit "
+                        f"integers does not fit 64 bits")
+    return product
+
+
 def compute(db):
-    compute_binary(db, operator.mul, "product")
+    compute_binary(db, _multiply, "product")

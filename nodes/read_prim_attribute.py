@@ -38,6 +38,8 @@ def prim_path(db) -> str:
 
 def compute(db):
     path = prim_path(db)
+    if not db.inputs.name:
+        db.error("no attribute name: inputs:name is empty")
     try:
         db.outputs.value = db.world.get_attribute(path, db.inputs.name)
     except WorldError as error:

@@ -32,6 +32,8 @@ SPEC = NodeSpec(
 
 def compute(db):
     path = prim_path(db)
+    if not db.inputs.name:
+        db.error("no attribute name: inputs:name is empty")
     try:
         db.world.set_attribute(path, db.inputs.name, db.inputs.value)
     except WorldError as error:

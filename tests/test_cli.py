@@ -94,7 +94,7 @@ def test_new_writes_a_runnable_starter_and_never_overwrites(tmp_path):
     starter = tmp_path / "starter.json"
     run = graphflow("run", str(starter))
     assert run.returncode == 0
-    assert run.stdout.splitlines() == ["tick"] * 10
+    assert run.stdout.splitlines() == [f"tick {count}" for count in range(1, 11)]   # its description: every count
     starter.write_text("my edits\n")
     again = graphflow("new", "starter", cwd=tmp_path)
     assert again.returncode == 2
@@ -121,7 +121,8 @@ def test_missing_stage_is_one_line_on_stderr(tmp_path):
                                  "nodes": [{"name": "tick", "type": "omni.graph.action.OnTick"}]}))
     result = graphflow("run", str(graph))
     assert result.returncode == 2
-    assert result.stderr.splitlines() == [f"graphflow: error: {graph}: {tmp_path / 'nope.usda'}: no such stage file"]
+    assert result.stderr.splitlines() == [
+        f"graphflow: error: {graph}: settings/stage: {tmp_path / 'nope.usda'}: no such stage file"]
 
 
 def test_gui_pacer_waits_for_simulated_time_only_when_ahead(monkeypatch):

@@ -37,7 +37,7 @@ def test_nan_is_a_double():
     ("bool", 1, "expected bool, got 1"),
     ("int", 1.5, "expected int, got 1.5"),
     ("int", True, "expected int, got true"),
-    ("uint", -1, "expected uint (>= 0), got -1"),
+    ("uint", -1, "expected uint (0 to 4294967295), got -1"),
     ("double", "fast", 'expected double, got "fast"'),
     ("double[3]", [1, 2], "expected double[3], got [1, 2]"),
     ("token[]", "a", 'expected token[], got "a"'),

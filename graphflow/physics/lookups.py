@@ -72,7 +72,7 @@ class SceneLookups:
             if owner is not None and owner != probe:
                 probe = owner
                 continue
-            probe = probe.rsplit("/", 1)[0]
+            probe = probe.rsplit("/", 1)[0] if "/" in probe else ""   # a relative path ends here too
         raise WorldError(f"{path} is not part of an articulation")
 
     # -- poses -----------------------------------------------------------------------------------

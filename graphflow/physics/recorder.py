@@ -69,6 +69,17 @@ def _imageio_ffmpeg():
     return imageio_ffmpeg
 
 
+def gif_frame_durations(count: int, fps: float) -> list[int]:
+    """Per-frame display times (ms) for a GIF at *fps*.
+
+    GIF stores frame times in whole centiseconds, so 15 fps (66.7 ms) cannot be one
+    value; each frame ends at the centisecond nearest its true end time instead
+    (70, 70, 60, ...), so the video keeps time with the simulation.
+    """
+    ends = [round((index + 1) * 100.0 / fps) for index in range(count)]
+    return [10 * max(1, end - start) for start, end in zip([0] + ends[:-1], ends)]
+
+
 class _ClientCalls:
     """PyBullet calls bound to one client id (worlds may hand out a bare id instead of a BulletClient)."""
 
@@ -181,15 +192,17 @@ class VideoRecorder:
     """
 
     def __init__(self, world, path: str | Path, *, fps: float = 30.0, size: tuple[int, int] = (480, 360),
-                 camera: Camera = Camera()):
+                 camera: Camera = Camera(), write_to: str | Path | None = None):
+        """*path* names the video (its kind comes from it); files go to *write_to* if given (a temporary
+        file or folder the caller renames into place once the video is complete)."""
         if size[0] < 16 or size[1] < 16:
             raise RecordingError(f"video size {size[0]}x{size[1]} is too small (at least 16x16)")
         if not fps > 0:
             raise RecordingError(f"frames per second must be positive, got {fps}")
         check_encoder(path)
         self.world = world
-        self.path = Path(path)
         self.kind = video_kind(path)
+        self.path = Path(write_to if write_to is not None else path)
         self.size = size
         self.ticks_per_frame = max(1, round(1.0 / (fps * world.time_step)))
         self.fps = 1.0 / (self.ticks_per_frame * world.time_step)
@@ -247,7 +260,8 @@ class VideoRecorder:
         """Finish the file (GIF frames are written here; the MP4 encoder is flushed)."""
         if self.kind == "gif" and self._gif_frames:
             first, *rest = self._gif_frames
-            first.save(self.path, save_all=True, append_images=rest, duration=round(1000 / self.fps), loop=0)
+            first.save(self.path, format="GIF", save_all=True, append_images=rest,
+                       duration=gif_frame_durations(len(self._gif_frames), self.fps), loop=0)
             self._gif_frames = []
         elif self._encoder is not None:
             if isinstance(self._encoder, subprocess.Popen):

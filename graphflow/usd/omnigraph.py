@@ -10,10 +10,10 @@ the caller asks to skip them (their connections go too).
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from ..document import FORMAT_NAME, FORMAT_VERSION, GraphDocument, parse_document
+from ..document import FORMAT_NAME, FORMAT_VERSION, GraphDocument, GraphError, parse_document
 from ..registry import Registry, default_registry
 from .node_mapping import (GENERIC_PUBLISHERS, LEGACY_GRIPPER_COMMANDS, LEGACY_GRIPPER_ID, PICK_PLACE_ID,
                            PICK_PLACE_OLD_INPUTS, RENDERING_NODES, gather_message_fields, is_legacy_surface_gripper,
@@ -53,16 +53,15 @@ def import_graph(stage_path: str, *, graph_path: str | None = None, output_path:
     The document's ``settings.stage`` points at the USD file (relative to
     *output_path*'s folder when given), so the imported graph runs on the stage it came from.
     """
-    from pxr import Usd
+    from .errors import StageError
+    from .physics_import import open_stage
 
     registry = registry or default_registry()
     label = str(stage_path)
-    if not Path(stage_path).is_file():
-        raise ImportProblem([f"{label}: file not found"])
-    try:
-        stage = Usd.Stage.Open(str(stage_path))
-    except Exception as error:  # usd-core raises Tf.ErrorException for files that are not USD
-        raise ImportProblem([f"{label}: not a readable USD stage ({str(error).strip().splitlines()[-1]})"]) from None
+    try:   # the same reading and messages as `graphflow stage` (file:line:column of a syntax error)
+        stage, _ = open_stage(stage_path)
+    except StageError as error:
+        raise ImportProblem(error.problems) from None
     graphs = find_graphs(stage)
     if graph_path is None:
         if not graphs:
@@ -132,7 +131,10 @@ def import_graph(stage_path: str, *, graph_path: str | None = None, output_path:
             "settings": settings, "nodes": nodes, "connections": connections}
     if ui:
         data["ui"] = {"nodes": ui}
-    document = parse_document(data, source=output_path or f"{label}:{graph_path}", registry=registry)
+    try:
+        document = parse_document(data, source=output_path or f"{label}:{graph_path}", registry=registry)
+    except GraphError as error:   # name the .usda the values came from, not the graph file not yet written
+        raise ImportProblem([str(replace(problem, file=label)) for problem in error.problems]) from None
     return ImportResult(document, graph_path, warnings)
 
 

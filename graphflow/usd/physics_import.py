@@ -24,6 +24,8 @@ from pathlib import Path
 
 from .description import (AxisLimit, Articulation, Body, Drive, Joint, MassProperties, Material, Shape,
                           StageDescription, SurfaceGripper)
+from graphflow.messages import usd_message
+
 from .errors import StageError, UnsupportedPrimWarning
 from graphflow.poses import AXIS_VECTORS, Pose, compose, quat_normalize, quat_rotate, relative, twist_angle
 
@@ -52,12 +54,8 @@ def open_stage(stage_or_path):
 
 
 def _usd_error_reason(error) -> str:
-    """The first message of a Tf error, without USD's source-file preamble."""
-    text = " ".join(str(error).split())
-    if " : '" in text:
-        text = text.split(" : '", 1)[1]
-        text = text.split("' Error in", 1)[0].rstrip("'")
-    return text or "unreadable"
+    """The first message of a Tf error (file:line:column and what is wrong), without USD's source-file preamble."""
+    return usd_message(error)
 
 
 def load_description(stage_or_path) -> StageDescription:
@@ -144,6 +142,9 @@ class _Importer:
     def run(self) -> StageDescription:
         from pxr import UsdPhysics
 
+        problems = self._prim_problems()
+        if problems:
+            raise StageError(*problems)
         parsed = _parse_physics(self.stage)
         kinds = UsdPhysics.ObjectType
         self.description = StageDescription(source=self.label, up_axis=self.up_axis, meters_per_unit=self.mpu,
@@ -173,6 +174,36 @@ class _Importer:
                     self._unsupported(str(path), f"{_enum_name(kind)} is not simulated")
         self._surface_grippers()
         return self._in_path_order(self.description)
+
+    def _prim_problems(self) -> list[str]:
+        """What no simulation can take, every one: negative or non-finite masses, collider boxes and
+        spheres of zero or non-finite size, bodies and colliders with non-finite transforms."""
+        from pxr import Usd, UsdGeom, UsdPhysics
+
+        problems = []
+        for prim in Usd.PrimRange(self.stage.GetPseudoRoot()):
+            is_body, is_collider = prim.HasAPI(UsdPhysics.RigidBodyAPI), prim.HasAPI(UsdPhysics.CollisionAPI)
+            if not (is_body or is_collider):
+                continue
+            where = f"{self.label}: {prim.GetPath()}"
+            matrix = self.xform_cache.GetLocalToWorldTransform(prim)
+            if not all(math.isfinite(matrix[row][column]) for row in range(4) for column in range(4)):
+                problems.append(f"{where}: its transform is not finite (NaN or infinity in an xformOp)")
+                continue
+            mass = self._attribute(prim, "physics:mass") if prim.HasAPI(UsdPhysics.MassAPI) else None
+            if mass is not None and not (math.isfinite(mass) and mass >= 0):
+                problems.append(f"{where}: physics:mass is {mass!r}; a mass must be a finite number >= 0")
+            if not is_collider:
+                continue
+            if prim.IsA(UsdGeom.Cube):
+                size = UsdGeom.Cube(prim).GetSizeAttr().Get()
+                if size is None or not (math.isfinite(size) and size > 0) or matrix.GetDeterminant3() == 0:
+                    problems.append(f"{where}: a collider box of zero or invalid size (size {size!r})")
+            elif prim.IsA(UsdGeom.Sphere):
+                radius = UsdGeom.Sphere(prim).GetRadiusAttr().Get()
+                if radius is None or not (math.isfinite(radius) and radius > 0):
+                    problems.append(f"{where}: a collider sphere of zero or invalid radius ({radius!r})")
+        return problems
 
     @staticmethod
     def _in_path_order(description: StageDescription) -> StageDescription:
