@@ -1,7 +1,7 @@
 """``graphflow stage STAGE.usda [--json] [--simulate SECONDS]``: what a stage holds, and whether it rests.
 
 The command side: argument checks, one line on stderr for a bad stage, the
-human and JSON printouts, exit codes (0 ok, 2 bad input). The report data comes
+human and JSON printouts, exit codes (0 ok, 1 the simulation diverged, 2 bad input). The report data comes
 from ``graphflow.physics.inspect`` (usd-core and PyBullet, imported only here,
 when the command runs).
 """
@@ -15,11 +15,14 @@ import warnings
 from .world import DEFAULT_TIME_STEP
 
 EXIT_OK = 0
+EXIT_RUNTIME = 1
 EXIT_BAD_INPUT = 2
 
 
 def run_stage_command(stage_path: str, as_json: bool, simulate_seconds: float | None) -> int:
     """Print a stage's physics summary (and a rest test with ``simulate_seconds``); return the exit code."""
+    from graphflow.physics import create_world
+    from graphflow.physics.health import NonFiniteState
     from graphflow.physics.inspect import simulate_report, stage_report
     from graphflow.usd.errors import StageError, UnsupportedPrimWarning
     from graphflow.usd.physics_import import load_description
@@ -32,12 +35,16 @@ def run_stage_command(stage_path: str, as_json: bool, simulate_seconds: float | 
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", UnsupportedPrimWarning)   # listed in the report instead
             description = load_description(stage_path)
-            report = stage_report(description)
+            with create_world(stage_path) as world:   # building also names what the PyBullet world cannot hold
+                report = stage_report(description, world.unsupported)
             simulation = simulate_report(stage_path, simulate_seconds) if simulate_seconds is not None else None
     except StageError as error:
         for problem in error.problems:
             print(f"graphflow stage: {problem}", file=sys.stderr)
         return EXIT_BAD_INPUT
+    except NonFiniteState as error:
+        print(f"graphflow stage: {stage_path}: {error}", file=sys.stderr)
+        return EXIT_RUNTIME
     if as_json:
         if simulation is not None:
             report["simulation"] = simulation

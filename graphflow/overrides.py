@@ -310,7 +310,7 @@ class Scenario:
 
         settings = self.document.settings
         try:
-            return create_world(stage, time_step=settings.get("timeStep"), substeps=settings.get("substeps", 1),
+            return create_world(stage, time_step=settings.get("timeStep"), substeps=settings.get("substeps"),
                                 gui=gui)
         except physics.StageError as error:
             labels = ", ".join(edit.label for edit in self.stage_edits)

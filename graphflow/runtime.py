@@ -24,7 +24,7 @@ class RunResult:
     stopped_by_graph: bool
 
 
-def create_world(stage=None, *, time_step: float | None = None, substeps: int = 1, gui: bool = False,
+def create_world(stage=None, *, time_step: float | None = None, substeps: int | None = None, gui: bool = False,
                  base_dir=None) -> World:
     """The one world factory: a ``ClockWorld`` without a stage, else the stage on PyBullet.
 
@@ -44,7 +44,7 @@ def create_world_for(document: GraphDocument, *, gui: bool = False) -> World:
     """The world a document asks for (its settings' stage, time step and substeps)."""
     settings = document.settings
     return create_world(settings.get("stage"), time_step=settings.get("timeStep"),
-                        substeps=settings.get("substeps", 1), gui=gui, base_dir=document.base_dir)
+                        substeps=settings.get("substeps"), gui=gui, base_dir=document.base_dir)
 
 
 class Listener(Protocol):

@@ -378,7 +378,7 @@ class EpisodeRunner:
         self._stage.GetSessionLayer().Clear()
         apply_stage_overrides(self._stage, stage_edits)
         return physics.create_world(self._stage, time_step=settings.get("timeStep"),
-                                    substeps=settings.get("substeps", 1))
+                                    substeps=settings.get("substeps"))
 
     def _simulation_for(self, edits):
         from .runtime import Simulation, create_world_for

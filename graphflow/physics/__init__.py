@@ -6,11 +6,13 @@ This is the only package that imports ``pybullet``; it is imported lazily, so
 Public API
 ==========
 
-``create_world(stage=None, *, time_step=None, substeps=1, gui=False) -> PyBulletWorld``
+``create_world(stage=None, *, time_step=None, substeps=None, gui=False) -> PyBulletWorld``
     *stage*: a ``.usd``/``.usda`` path, ``asset:NAME`` (a packaged stage), an
     open ``Usd.Stage``, or None for an empty world with default gravity. *time_step* None = the stage's PhysicsScene
     ``physxScene:timeStepsPerSecond`` if authored, else 1/60 s (Isaac Sim's
-    default). A world is a context manager; ``close()`` frees its client.
+    default). *substeps* None = enough PyBullet steps per stage step that each is at most
+    1/240 s (4 at 60 Hz: see ``graphflow.physics.contacts``). A world is a context manager;
+    ``close()`` frees its client.
     A broken stage raises ``StageError`` (a ``ValueError``) naming file and prim.
 
 ``resolve_stage(reference, base_dir=None) -> Path`` / ``asset_path(name) -> Path``
@@ -60,9 +62,15 @@ of the client re-create it from a ``reset()`` hook or lazily.
 Choices
 =======
 
-* Drives are a PD force computed each (sub)step and applied as joint torque
-  (``TORQUE_CONTROL``), integrated implicitly so stiff drives stay stable; see
-  ``drives.drive_efforts``. PyBullet's default joint motors are off.
+* Drives are PhysX's implicit PD drive computed once per stage step with the joints' gravity
+  load and feed-forward efforts (``drive_law``): joint torques, or for a drive far stiffer than
+  its link a velocity motor solved with the contacts. A joint that a step would carry past a
+  limit is stopped on it by a rigid motor. See docs/physics.md.
+* Contacts (``contacts``): PyBullet steps of at most 1/240 s (4 per 60 Hz stage step unless
+  ``substeps`` is given), a friction anchor on every dynamic body, a ``UsdGeom.Plane`` collider
+  as a large static box.
+* A non-finite body pose or velocity after a step raises ``health.NonFiniteState`` naming the
+  body and the step.
 * Initial joint positions: ``state:{angular,linear}:physics:position`` (PhysX
   JointStateAPI, degrees for angular) if authored, else taken from the bodies'
   authored poses. Link poses follow from the root pose by forward kinematics.
@@ -85,7 +93,7 @@ __all__ = ["create_world", "StageError", "UnsupportedPrimWarning", "asset_path",
            "PyBulletWorld", "RayHit", "Contact", "ATTRIBUTES"]
 
 
-def create_world(stage=None, *, time_step: float | None = None, substeps: int = 1, gui: bool = False):
+def create_world(stage=None, *, time_step: float | None = None, substeps: int | None = None, gui: bool = False):
     """Load a stage (path or ``Usd.Stage``; None = empty world) into a new PyBullet world."""
     from graphflow.usd.description import StageDescription
     from graphflow.usd.physics_import import load_description, open_stage

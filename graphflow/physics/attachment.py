@@ -61,6 +61,7 @@ from graphflow.poses import AXIS_VECTORS, Pose, compose, invert, quat_rotate, re
 
 HOLD_MAX_FORCE = 1.0e7          # N (and N·m); far above any break limit so the reading is never clamped
 CONTACT_DAMPING_STEPS = 10      # while the object touches something, damping >= this * m / dt
+INSIDE_PROBE_RADIUS = 1.0e-4   # m: a ray starts inside a body when this sphere at its origin is 2 radii deep
 
 
 @dataclass

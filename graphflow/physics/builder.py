@@ -16,7 +16,12 @@ Mapping (documented in ``graphflow.physics``):
 * joints outside articulations become constraints (fixed, prismatic, point to
   point; revolute as two point-to-point constraints on the axis);
 * D6 joints with ``excludeFromArticulation`` are not built: they are the
-  surface gripper's attachment points, kept as descriptions;
+  surface gripper's attachment points, kept as descriptions; a D6 joint from
+  an articulation to the world fixes its base; bodies and joints an
+  articulation's tree cannot take (off the root, closing a loop) are free
+  bodies and constraints, each named once;
+* a ``UsdGeom.Plane`` collider is a large static box whose top face is the
+  plane, every dynamic body gets a friction anchor (``contacts``);
 * friction and restitution are given to PyBullet as square roots: Bullet
   multiplies the two bodies' coefficients where PhysX averages them, so equal
   materials combine to the authored value. Bullet has one friction
@@ -26,12 +31,13 @@ from __future__ import annotations
 
 import math
 import os
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from graphflow.usd.description import Body, Joint, Shape, StageDescription
 from graphflow.usd.physics_import import joint_frame_offset
-from graphflow.poses import (AXIS_VECTORS, IDENTITY_POSE, Pose, compose, invert, quat_multiply,
-                                      quat_from_axis_angle)
+from graphflow.poses import AXIS_VECTORS, IDENTITY_POSE, Pose, compose, invert, quat_from_axis_angle, quat_multiply
+
+from .contacts import anchor_friction, plane_box
 
 CONE_SEGMENTS = 24                 # a cone collider is the convex hull of this many base points and its apex
 CONSTRAINT_MAX_FORCE = 1.0e9       # joints between free bodies are rigid (see pybullet_notes §4 default quirk)
@@ -124,8 +130,8 @@ class SceneBuilder:
         articulated: set[str] = set()
         for articulation in self.description.articulations:
             if self._build_articulation(articulation):
-                articulated.update(articulation.bodies)
-                articulated.update(articulation.joints)
+                # what the multibody holds; bodies and joints it could not take are free bodies and constraints
+                articulated.update(self.scene.articulations[articulation.path].members)
         for path, body in self.description.bodies.items():
             if path not in articulated:
                 self._build_free_body(body)
@@ -151,8 +157,10 @@ class SceneBuilder:
         single = shapes[0] if len(shapes) == 1 else None
         if single is not None and single.kind in ("plane", "triangle_mesh"):
             pose = compose(frame, single.pose)
-            if single.kind == "plane":
-                return p.createCollisionShape(p.GEOM_PLANE, planeNormal=AXIS_VECTORS[single.axis],
+            if single.kind == "plane":   # a large box: PyBullet's plane shape lets contacts sink and creep
+                half_extents, centre = plane_box(single.axis)
+                pose = compose(pose, (tuple(centre), (0.0, 0.0, 0.0, 1.0)))
+                return p.createCollisionShape(p.GEOM_BOX, halfExtents=half_extents,
                                               collisionFramePosition=pose[0], collisionFrameOrientation=pose[1])
             return p.createCollisionShape(p.GEOM_MESH, vertices=[list(v) for v in single.points],
                                           indices=[i for tri in single.triangles for i in tri],
@@ -210,6 +218,8 @@ class SceneBuilder:
                          linearDamping=body.linear_damping, angularDamping=body.angular_damping)
         if body.mass is not None and body.kind == "dynamic":
             p.changeDynamics(body_id, link, localInertiaDiagonal=list(body.mass.diagonal_inertia))
+        if body.kind == "dynamic":
+            anchor_friction(p, body_id, link)
 
     def _register(self, body: Body, body_id: int, link: int, inertial_in_prim: Pose, articulation: str | None,
                   mass: float):
@@ -253,21 +263,34 @@ class SceneBuilder:
             joint_paths=tuple(j.path for _i, j, _s in links.dofs), joint_indices=tuple(i for i, *_ in links.dofs),
             signs=tuple(s for _i, _j, s in links.dofs), angular=tuple(j.kind == "revolute" for _i, j, _s in links.dofs),
             drives=drives,
-            members=frozenset([articulation.path, *tree.visited - {None}, *(j.path for _c, j, _p, _b in tree.order)]))
+            members=frozenset([articulation.path, *tree.visited - {None}, *(j.path for _c, j, _p, _b in tree.order),
+                               *([tree.anchor_joint.path] if tree.anchor_joint is not None else [])]))
         self.scene.articulations[articulation.path] = handle
         for dof, path in enumerate(handle.joint_paths):
             self.scene.joint_dofs[path] = (articulation.path, dof)
         return True
 
     def _articulation_joints(self, articulation) -> list[Joint]:
-        """The enabled joints a multibody can have (fixed, revolute, prismatic), by path; others are noted."""
+        """The enabled joints a multibody can have (fixed, revolute, prismatic), by path; others are noted.
+
+        A D6 joint from the articulation to the world (how Isaac's robot assets, the Franka, anchor
+        their root) fixes the base, as PhysX does.
+        """
         description = self.description
         joints = [description.joints[path] for path in sorted(articulation.joints)
                   if description.joints[path].enabled and description.joints[path].kind in ("fixed", "revolute",
                                                                                               "prismatic")]
-        for path in articulation.joints:
-            if description.joints[path].kind not in ("fixed", "revolute", "prismatic"):
-                self._unsupported(path, f"a {description.joints[path].kind} joint inside an articulation")
+        for path in sorted(articulation.joints):
+            joint = description.joints[path]
+            if joint.kind == "d6" and joint.enabled and (joint.body0 is None or joint.body1 is None):
+                self._unsupported(path, "a D6 joint from an articulation to the world: simulated as fixed "
+                                        "(its free axes are not simulated)")
+                joints.append(replace(joint, kind="fixed"))
+            elif joint.kind == "spherical":
+                self._unsupported(path, "a spherical joint inside an articulation: simulated as a point-to-point "
+                                        "constraint (no limits)")
+            elif joint.kind not in ("fixed", "revolute", "prismatic"):
+                self._unsupported(path, f"a {joint.kind} joint inside an articulation is not simulated")
         return joints
 
     def _choose_base(self, articulation, members: list[str], joints: list[Joint]) -> "_Tree":
@@ -281,7 +304,8 @@ class SceneBuilder:
         if anchor_joint.kind == "fixed":
             root_body = anchor_joint.body1 if anchor_joint.body0 is None else anchor_joint.body0
         for extra in world_joints[1:]:
-            self._unsupported(extra.path, "a second joint to the world in one articulation (closed loop)")
+            self._unsupported(extra.path, "a second joint to the world in one articulation (closed loop): "
+                                          "simulated as a constraint (no limits, no drive)")
             joints.remove(extra)
         return _Tree(root_body, True, anchor_joint)
 
@@ -310,13 +334,15 @@ class SceneBuilder:
             remaining.remove(joint)
             child = joint.body1 if joint.body0 == parent else joint.body0
             if child in tree.visited or child is None:
-                self._unsupported(joint.path, "a joint closing a loop in an articulation")
+                self._unsupported(joint.path, "a joint closing a loop in an articulation: simulated as a "
+                                              "constraint (no limits, no drive)")
                 continue
             tree.visited.add(child)
             tree.order.append((child, joint, parent, joint.body1 == child))
             stack.append(child)
         for joint in remaining:
-            self._unsupported(joint.path, "a joint not connected to its articulation's root")
+            self._unsupported(joint.path, "a joint not connected to its articulation's root: simulated as a "
+                                          "constraint between free bodies (no limits, no drive)")
 
     def _link_arrays(self, tree: "_Tree") -> "_Links":
         """createMultiBody's link arrays; each link frame is its joint frame (prim frames expressed in it)."""

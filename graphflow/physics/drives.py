@@ -7,6 +7,7 @@ afresh from the parsed stage on every (re)build.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -15,9 +16,7 @@ import pybullet
 from graphflow.usd.description import StageDescription
 
 from .builder import ArticulationHandle, BodyHandle
-
-MOTOR_MAX_FORCE = 1.0e9             # N or N m: a floating-base drive without a force limit
-
+from .drive_law import MOTOR_MAX_FORCE, drive_efforts, is_stiff, motor_velocity
 
 @dataclass
 class DriveTargets:
@@ -37,118 +36,130 @@ class DriveTargets:
                    [0.0] * len(drives))
 
 
-def apply_drives(client, articulation: ArticulationHandle, targets: DriveTargets, dt: float) -> None:
-    """Set this (sub)step's joint motors or torques of one articulation."""
-    if not articulation.fixed_base:
-        drive_floating(client, articulation, targets, dt)
-    elif articulation.driven or any(targets.efforts):
-        client.setJointMotorControlArray(articulation.body_id, articulation.joint_indices, pybullet.TORQUE_CONTROL,
-                                         forces=drive_efforts(client, articulation, targets, dt))
+class JointControl:
+    """What the world applies to the articulations' joints each stage step, held over its substeps.
 
-
-def drive_efforts(client, articulation: ArticulationHandle, targets: DriveTargets, dt: float) -> list[float]:
-    """Joint efforts of the drives: a PD law integrated implicitly (backward Euler).
-
-    A force drive's effort is f = k (q* - q - dt v') + d (v* - v'), with v' the
-    velocity at the end of the step. With M the joint-space inertia matrix and
-    D = diag(dt d + dt^2 k) this gives (M + D) a = r, r = k (q* - q - dt v) +
-    d (v* - v), and f = M a: stable for any gain at 60 Hz, where an explicit
-    spring (or one using only M's diagonal) blows up on a stiff, coupled arm.
-    Acceleration drives (PhysX semantics: gains per unit of inertia) use the
-    joint's own inertia M_ii: f = M_ii r / (1 + dt d + dt^2 k). Feed-forward
-    efforts are added, then each result is clamped to the drive's max force.
-    Targets beyond the joint's limits are pursued only up to the limit, so a
-    stiff drive does not push the joint through PyBullet's (soft) limit.
-    A joint's max velocity limits the position error the spring sees to
-    v_max (d + dt k) / k, where the drive's pull and damping balance at v_max (PyBullet's
-    own velocity clamp fights an implicit drive, so it is not used).
+    Per articulation with drives, limits, efforts or links whose weight joint torques cancel:
+    joint torques from the drive law (``drive_law``: the implicit PhysX drive with the links'
+    gravity load, feed-forward efforts added), velocity motors for drives far stiffer than their
+    links, and a rigid motor that stops a joint on its limit where this step would carry it past
+    (PyBullet's own limits stop a joint only after it passed, and never push it back).
     """
-    states = client.getJointStates(articulation.body_id, articulation.joint_indices)
-    signs = articulation.signs
-    count = len(states)
-    inertia = joint_inertia(client, articulation, [s[0] for s in states])
-    efforts = list(targets.efforts)
-    target_positions, target_velocities = targets.positions, targets.velocities
-    residual = [0.0] * count
-    implicit = [0.0] * count
-    force_driven = []
-    for dof, drive in enumerate(articulation.drives):
-        if drive is None:
-            continue
-        k, d = drive.stiffness, drive.damping
-        sign, state = signs[dof], states[dof]
-        position, velocity = sign * state[0], sign * state[1]
-        error = min(max(target_positions[dof], drive.lower), drive.upper) - position
-        if drive.max_velocity is not None and k > 0 and d > 0:
-            limit = drive.max_velocity * (d + dt * k) / k
-            error = max(-limit, min(limit, error))
-        r = k * (error - dt * velocity) + d * (target_velocities[dof] - velocity)
-        if drive.acceleration:
-            efforts[dof] += float(inertia[dof, dof]) * r / (1.0 + dt * d + dt * dt * k)
+
+    def __init__(self, client, scene, description: StageDescription, gravity: GravitySwitches,
+                 targets: dict[str, DriveTargets]):
+        self.client = client
+        self.scene = scene
+        self.gravity = gravity
+        self.targets = targets
+        joints = description.joints
+        self.limits = {path: [(joints[j].lower, joints[j].upper) for j in articulation.joint_paths]
+                       for path, articulation in scene.articulations.items()}
+        self._plans: dict[str, tuple] = {}        # per articulation: its links' weights, for the switches' version
+        self._version = -1
+
+    def torques(self, dt: float) -> list[tuple[ArticulationHandle, list[float]]]:
+        """(articulation, joint torques in PyBullet coordinates) of every controlled articulation; sets its motors."""
+        if self._version != self.gravity.version:
+            self._plans.clear()
+            self._version = self.gravity.version
+        return [(articulation, self._efforts(articulation, self.targets[path], dt))
+                for path, articulation in self.scene.articulations.items()
+                if self._controlled(articulation) or any(self.targets[path].efforts)]
+
+    def _controlled(self, articulation: ArticulationHandle) -> bool:
+        return (articulation.driven
+                or any(math.isfinite(limit) for limits in self.limits[articulation.path] for limit in limits)
+                or self._gravity_plan(articulation)[1])
+
+    def _efforts(self, articulation: ArticulationHandle, targets: DriveTargets, dt: float) -> list[float]:
+        client = self.client
+        states = client.getJointStates(articulation.body_id, articulation.joint_indices)
+        signs = articulation.signs
+        positions = [sign * s[0] for sign, s in zip(signs, states)]
+        velocities = [sign * s[1] for sign, s in zip(signs, states)]
+        inertia = joint_inertia(client, articulation, [s[0] for s in states])   # diagonal unchanged by the signs
+        diagonal = inertia.diagonal().tolist()
+        drives = articulation.drives
+        motors = [None if drive is None or not is_stiff(drive, diagonal[dof], dt) else
+                  motor_velocity(drive, targets.positions[dof], targets.velocities[dof], diagonal[dof],
+                                 positions[dof], signs[dof] * states[dof][3], dt)
+                  for dof, drive in enumerate(drives)]
+        load, cancelling = self._joint_gravity(articulation, [s[0] for s in states])
+        if all(motor is not None for motor in motors):     # every DOF a motor (the UR10): no torque law to solve
+            efforts, accelerations = targets.efforts, None
         else:
-            residual[dof] = r
-            implicit[dof] = dt * d + dt * dt * k
-            force_driven.append(dof)
-    if force_driven:
-        if -1.0 in signs:   # signs flip rows and columns of M alike, so M in USD coordinates is S M S
-            inertia = inertia * np.outer(signs, signs)
-        matrix = inertia + np.diag(implicit)
-        acceleration = np.linalg.solve(matrix, residual).tolist()
-        for dof in force_driven:
-            efforts[dof] += residual[dof] - implicit[dof] * acceleration[dof]
-    result = []
-    for dof, drive in enumerate(articulation.drives):
-        effort = efforts[dof]
-        if drive is not None:
-            effort = max(-drive.max_force, min(drive.max_force, effort))
-        result.append(signs[dof] * effort)
-    return result
+            if -1.0 in signs:   # signs flip rows and columns of M alike, so M in USD coordinates is S M S
+                inertia = inertia * np.outer(signs, signs)
+            torque_drives = [drive if motor is None else None for drive, motor in zip(drives, motors)]
+            efforts, accelerations = drive_efforts(torque_drives, targets, positions, velocities, inertia,
+                                                   np.array(signs) * load, dt)
+            efforts, accelerations = efforts.tolist(), accelerations.tolist()
+        velocity_targets, forces = [], []
+        for dof, (lower, upper) in enumerate(self.limits[articulation.path]):
+            motor = motors[dof]
+            velocity = motor if motor is not None else velocities[dof] + dt * accelerations[dof]
+            stopped = min(max(velocity, (lower - positions[dof]) / dt), (upper - positions[dof]) / dt)
+            if stopped != velocity:
+                velocity_targets.append(signs[dof] * stopped)
+                forces.append(MOTOR_MAX_FORCE)
+            elif motor is not None:
+                velocity_targets.append(signs[dof] * motor)
+                forces.append(min(drives[dof].max_force, MOTOR_MAX_FORCE))
+            else:
+                velocity_targets.append(0.0)
+                forces.append(0.0)
+        client.setJointMotorControlArray(articulation.body_id, articulation.joint_indices, pybullet.VELOCITY_CONTROL,
+                                         targetVelocities=velocity_targets, forces=forces)
+        return [sign * effort + cancel for sign, effort, cancel in zip(signs, efforts, cancelling)]
 
+    def _gravity_plan(self, articulation: ArticulationHandle) -> tuple:
+        """((link, m g) of the links whose gravity is on, whether joint torques cancel the weight of the others)."""
+        plan = self._plans.get(articulation.path)
+        if plan is None:
+            gravity = np.array(self.gravity.gravity)
+            links = [(path, handle.link, self.gravity.masses[path] * gravity)
+                     for path, handle in sorted(self.scene.bodies.items())
+                     if handle.articulation == articulation.path and handle.link >= 0 and handle.kind == "dynamic"]
+            plan = self._plans[articulation.path] = (
+                [(link, weight) for path, link, weight in links if path not in self.gravity.off],
+                articulation.fixed_base and any(path in self.gravity.off for path, _link, _weight in links))
+        return plan
 
-def drive_floating(client, articulation: ArticulationHandle, targets: DriveTargets, dt: float) -> None:
-    """Drives of a floating-base articulation: PyBullet joint motors, solved with the contacts.
+    def _joint_gravity(self, articulation: ArticulationHandle, positions: list[float]) -> tuple[np.ndarray, list]:
+        """(gravity load, gravity-cancelling torques) on the DOFs, PyBullet coordinates.
 
-    A legged robot stands on its drives: the load on a leg is the ground's reaction, which
-    only the constraint solver knows, in the same step. The torque drive of
-    ``drive_efforts`` cannot include it: it holds a static load L with k M / (M + D)
-    instead of k, and for light legs under stiff gains (the krabby: M ~ 0.1 kg m^2,
-    D ~ 6e4) the legs folded by 0.35 rad. Here each drive is PhysX's implicit drive
-    f = k (q* - q - dt v') + d (v* - v') taken in its stiff limit: a velocity motor with
-    target v' = (k (q* - q) + d v*) / (dt k + d) (the velocity at which f = 0; max velocity
-    clamps it) and the drive's max force, solved with the contacts. Both drive types have
-    this target. It is exact as long as the drive is stiff for the link (dt (dt k + d) >> M,
-    i.e. D >> M); a soft drive is then rigid against loads, where PhysX would give way by L / k.
-    Feed-forward efforts are added as joint torques.
-    """
-    signs = articulation.signs
-    states = client.getJointStates(articulation.body_id, articulation.joint_indices)
-    indices, velocities, forces = [], [], []
-    for dof, drive in enumerate(articulation.drives):
-        if drive is None:
-            continue
-        k, d = drive.stiffness, drive.damping
-        if not dt * k + d > 0.0:
-            continue
-        error = min(max(targets.positions[dof], drive.lower), drive.upper) - signs[dof] * states[dof][0]
-        velocity = (k * error + d * targets.velocities[dof]) / (dt * k + d)
-        if drive.max_velocity is not None:
-            velocity = max(-drive.max_velocity, min(drive.max_velocity, velocity))
-        indices.append(articulation.joint_indices[dof])
-        velocities.append(signs[dof] * velocity)
-        forces.append(min(drive.max_force, MOTOR_MAX_FORCE))
-    if indices:
-        client.setJointMotorControlArray(articulation.body_id, indices, pybullet.VELOCITY_CONTROL,
-                                         targetVelocities=velocities, forces=forces)
-    if any(targets.efforts):
-        client.setJointMotorControlArray(articulation.body_id, articulation.joint_indices, pybullet.TORQUE_CONTROL,
-                                         forces=[sign * effort for sign, effort in zip(signs, targets.efforts)])
+        The load is the sum of J^T m g over the links whose gravity is on (the base's weight goes to
+        whatever holds the base). On a fixed base, the links whose gravity is off get joint torques
+        that cancel their weight: from one inverse-dynamics call, G = -(sum over all links).
+        """
+        on, cancel_off = self._gravity_plan(articulation)
+        zeros = [0.0] * len(positions)
+        load = np.zeros(len(positions))
+        offset = 0 if articulation.fixed_base else 6
+        for link, weight in on:
+            linear, _angular = self.client.calculateJacobian(articulation.body_id, link, (0.0, 0.0, 0.0),
+                                                             positions, zeros, zeros)
+            load += weight @ np.array(linear)[:, offset:]
+        if not cancel_off:
+            return load, zeros
+        holding_all = self.client.calculateInverseDynamics(articulation.body_id, positions, zeros, zeros)
+        return load, [hold + part for hold, part in zip(holding_all, load.tolist())]
 
 
 def joint_inertia(client, articulation: ArticulationHandle, positions: list[float]) -> np.ndarray:
-    """The joint-space inertia matrix of the articulation's DOFs (PyBullet coordinates)."""
+    """The joint-space inertia matrix of the articulation's DOFs (PyBullet coordinates).
+
+    For a floating base, the inertia the joints feel with the base free (the Schur complement):
+    the smallest the joints can feel (contacts only add to it), which keeps the drive's load
+    estimate from over-correcting (``drive_law``).
+    """
     matrix = np.array(client.calculateMassMatrix(articulation.body_id, positions))
-    offset = 0 if articulation.fixed_base else 6
-    return matrix[offset:offset + len(positions), offset:offset + len(positions)]
+    if articulation.fixed_base:
+        return matrix
+    base, joints = matrix[:6, :6], matrix[6:, 6:]
+    coupling = matrix[6:, :6]
+    return joints - coupling @ np.linalg.solve(base, coupling.T)
 
 
 class GravitySwitches:
@@ -158,11 +169,13 @@ class GravitySwitches:
     (and the gripper's gravity compensation) is done.
     """
 
-    def __init__(self, bodies: dict[str, BodyHandle], masses: dict[str, float], gravity):
+    def __init__(self, bodies: dict[str, BodyHandle], masses: dict[str, float], gravity, by_joint_torques=frozenset()):
         self.bodies = bodies
         self.masses = masses              # the world's live masses (``physics:mass`` can be set)
         self.gravity = gravity
+        self.by_joint_torques = by_joint_torques   # links of fixed-base articulations: ``JointControl`` cancels them
         self.off = {path for path, handle in bodies.items() if not handle.gravity_enabled and handle.kind == "dynamic"}
+        self.version = 0                  # counts changes of ``off`` and of masses
         self._plan: list[tuple] | None = None      # from ``off`` and masses, rebuilt when they change
 
     def enabled(self, handle: BodyHandle) -> bool:
@@ -175,9 +188,11 @@ class GravitySwitches:
         elif handle.kind == "dynamic":
             self.off.add(handle.path)
         self._plan = None
+        self.version += 1
 
     def masses_changed(self) -> None:
         self._plan = None
+        self.version += 1
 
     def apply(self, client) -> None:
         """Apply -m g at the centre of mass of every dynamic body whose gravity is switched off."""
@@ -195,7 +210,7 @@ class GravitySwitches:
     def _make_plan(self) -> list[tuple]:
         """Per PyBullet body: (id, its base's weight or None, links, their weights) of the bodies switched off."""
         plan: dict[int, list] = {}
-        for path in sorted(self.off):
+        for path in sorted(self.off - self.by_joint_torques):
             handle = self.bodies[path]
             entry = plan.setdefault(handle.body_id, [handle.body_id, None, [], []])
             weight = [-self.masses[path] * g for g in self.gravity]

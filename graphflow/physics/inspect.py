@@ -10,8 +10,9 @@ import math
 from graphflow.usd.description import StageDescription
 
 
-def stage_report(description: StageDescription) -> dict:
-    """The stage summary as a JSON-ready dict."""
+def stage_report(description: StageDescription, unsupported) -> dict:
+    """The stage summary as a JSON-ready dict; *unsupported*: (path, reason) of everything the import and
+    the world's build could not represent (``world.unsupported``)."""
     bodies = description.bodies
     joints_by_kind: dict[str, int] = {}
     for joint in description.joints.values():
@@ -42,7 +43,7 @@ def stage_report(description: StageDescription) -> dict:
         "surface_grippers": [{"path": g.path, "attachment_points": list(g.attachment_points)}
                              for g in description.surface_grippers],
         "attachment_joints": sorted(description.attachment_joints),
-        "unsupported": [{"path": path, "reason": reason} for path, reason in description.unsupported],
+        "unsupported": [{"path": path, "reason": reason} for path, reason in unsupported],
     }
 
 

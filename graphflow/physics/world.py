@@ -12,25 +12,27 @@ from __future__ import annotations
 import math
 import shutil
 import tempfile
-import warnings
 from typing import Sequence
 
 import pybullet
 from pybullet_utils.bullet_client import BulletClient
 
 from graphflow.usd.description import StageDescription
-from graphflow.usd.errors import UnsupportedPrimWarning
+from graphflow.usd.errors import warn_unsupported
 from graphflow.poses import compose
 from graphflow.world import DEFAULT_TIME_STEP, Contact, RayHit, Services, WorldError
 
 from . import attributes
 from .attachment import WorldAttachments
 from .builder import BuiltScene, SceneBuilder
-from .drives import DriveTargets, GravitySwitches, apply_drives
+from .contacts import internal_substeps, solver_iterations
+from .drives import DriveTargets, GravitySwitches, JointControl
+from .health import NonFiniteState, first_non_finite, health_plan
 from .lookups import SceneLookups
 from .native_output import native_stdout_silenced
 
 SOLVER_ITERATIONS = 50              # PyBullet's default, stated so it stays fixed
+INSIDE_PROBE_RADIUS = 1.0e-4        # m: a ray starts inside a body when this sphere at its origin is 2 radii deep
 ATTRIBUTES = attributes.ATTRIBUTES
 
 
@@ -58,17 +60,19 @@ class PyBulletWorld(SceneLookups):
     """
 
     def __init__(self, description: StageDescription, stage=None, *, time_step: float | None = None,
-                 substeps: int = 1, gui: bool = False):
+                 substeps: int | None = None, gui: bool = False):
         chosen = time_step if time_step is not None else (description.time_step or DEFAULT_TIME_STEP)
         if not chosen > 0:
             raise ValueError(f"time step must be positive, got {chosen}")
+        if substeps is None:
+            substeps = internal_substeps(chosen)
         if substeps < 1:
             raise ValueError(f"substeps must be at least 1, got {substeps}")
         self.description = description
         self.stage = stage
         self.time_step = float(chosen)
         self.substeps = int(substeps)
-        self.solver_iterations = SOLVER_ITERATIONS
+        self.solver_iterations = solver_iterations(description.solver_iterations, SOLVER_ITERATIONS)
         self.time = 0.0
         self.step_index = 0
         self.playing = True
@@ -99,13 +103,19 @@ class PyBulletWorld(SceneLookups):
         for path, reason in self.scene.unsupported:
             if (path, reason) not in self.unsupported:
                 self.unsupported.append((path, reason))
-                warnings.warn(UnsupportedPrimWarning(f"{self.description.source}: {path}: {reason}"), stacklevel=4)
+                warn_unsupported(self.description.source, path, reason)
         self.masses = {path: handle.mass for path, handle in self.scene.bodies.items()}
-        self.gravity_switches = GravitySwitches(self.scene.bodies, self.masses, self.description.gravity)
+        by_joint_torques = frozenset(path for path, handle in self.scene.bodies.items()
+                                     if handle.link >= 0 and handle.articulation is not None
+                                     and self.scene.articulations[handle.articulation].fixed_base)
+        self.gravity_switches = GravitySwitches(self.scene.bodies, self.masses, self.description.gravity,
+                                                by_joint_torques)
         self.drive_targets = {path: DriveTargets.authored(articulation, self.description)
                               for path, articulation in self.scene.articulations.items()}
-        self._driven = [(articulation, self.drive_targets[path])
-                        for path, articulation in self.scene.articulations.items()]
+        self.joint_control = JointControl(client, self.scene, self.description, self.gravity_switches,
+                                          self.drive_targets)
+        self._health_plan = health_plan(self.scene)
+        self._probe: int | None = None          # the collision shape of ``_body_around``
         self._pending_forces: list[tuple[int, int, tuple, tuple | None]] = []
         self._offsets: dict = {}
 
@@ -137,10 +147,15 @@ class PyBulletWorld(SceneLookups):
         """One fixed step (``substeps`` PyBullet steps), then attachments and services. No-op while paused."""
         if not self.playing:
             return
+        torques = self.joint_control.torques(self.time_step)      # once per stage step, held over its substeps
         for _ in range(self.substeps):
-            self._apply_pre_step_forces(self.time_step / self.substeps)
+            self._apply_pre_step_forces(torques)
             self.client.stepSimulation()
         self._pending_forces = []
+        broken = first_non_finite(self.client, self._health_plan)
+        if broken is not None:
+            raise NonFiniteState(f"{broken}: pose or velocity is not finite after physics step {self.step_index + 1} "
+                                 f"(t = {(self.step_index + 1) * self.time_step:.4g} s): the simulation diverged")
         self.step_index += 1
         self.time = self.step_index * self.time_step
         self.attachments.update(self.time_step)
@@ -168,10 +183,11 @@ class PyBulletWorld(SceneLookups):
         self.close()
 
     # -- per-step forces: drives, gravity switches, queued forces -----------------------------------
-    def _apply_pre_step_forces(self, dt: float):
+    def _apply_pre_step_forces(self, torques: list[tuple]):
         client = self.client
-        for articulation, targets in self._driven:
-            apply_drives(client, articulation, targets, dt)
+        for articulation, forces in torques:
+            client.setJointMotorControlArray(articulation.body_id, articulation.joint_indices,
+                                             pybullet.TORQUE_CONTROL, forces=forces)
         self.gravity_switches.apply(client)
         for body_id, link, force, position in self._pending_forces:
             client.applyExternalForce(body_id, link, force, position, pybullet.WORLD_FRAME)
@@ -217,11 +233,15 @@ class PyBulletWorld(SceneLookups):
 
     def joint_positions(self, articulation_path: str) -> tuple[float, ...]:
         articulation = self._articulation(articulation_path)
+        if not articulation.joint_indices:
+            return ()
         states = self.client.getJointStates(articulation.body_id, articulation.joint_indices)
         return tuple(sign * s[0] for sign, s in zip(articulation.signs, states))
 
     def joint_velocities(self, articulation_path: str) -> tuple[float, ...]:
         articulation = self._articulation(articulation_path)
+        if not articulation.joint_indices:
+            return ()
         states = self.client.getJointStates(articulation.body_id, articulation.joint_indices)
         return tuple(sign * s[1] for sign, s in zip(articulation.signs, states))
 
@@ -255,7 +275,31 @@ class PyBulletWorld(SceneLookups):
         self._pending_forces.append((handle.body_id, handle.link, tuple(float(f) for f in force), point))
 
     def raycast(self, origin, direction, length: float) -> RayHit | None:
+        """The first hit, PhysX-style: a body the ray starts inside is hit at distance 0."""
+        inside = self._body_around(origin)
+        if inside is not None:
+            return RayHit(inside, tuple(origin), tuple(-c for c in direction), 0.0)
         return self.raycast_batch([origin], [direction], length)[0]
+
+    def _body_around(self, point) -> str | None:
+        """The body *point* lies inside, if any (the deepest): PyBullet's rays report only surfaces they
+        enter, so a tiny probe sphere is tested against the bodies whose bounding boxes hold the point."""
+        client = self.client
+        low = [c - INSIDE_PROBE_RADIUS for c in point]
+        high = [c + INSIDE_PROBE_RADIUS for c in point]
+        candidates = client.getOverlappingObjects(low, high) or ()
+        if not candidates:
+            return None
+        if self._probe is None:     # kept until the world is rebuilt (PyBullet prints a note on removing shapes)
+            self._probe = client.createCollisionShape(pybullet.GEOM_SPHERE, radius=INSIDE_PROBE_RADIUS)
+        deepest, depth = None, -2.0 * INSIDE_PROBE_RADIUS       # the probe itself overlaps by its diameter
+        for body_id, link in candidates:
+            for contact in client.getClosestPoints(bodyA=body_id, bodyB=-1, distance=0.0, linkIndexA=link,
+                                                   collisionShapeB=self._probe, collisionShapePositionB=list(point)):
+                prim = self.prim_at(body_id, link)
+                if contact[8] < depth and prim:
+                    deepest, depth = prim, contact[8]
+        return deepest
 
     def raycast_batch(self, origins, directions, length: float) -> list[RayHit | None]:
         """Closest hit of each ray (directions are normalised here), None where nothing is hit."""

@@ -11,8 +11,8 @@ mass properties (through ``RigidBodyAPI.ComputeMassProperties``), PhysX extras
 the joint state (``state:{angular,linear}:physics:{position,velocity}``, the
 PhysX JointStateAPI naming) and surface-gripper prims.
 
-Unsupported physics prims are reported once each with ``warnings.warn`` using
-``UnsupportedPrimWarning`` (and listed in ``StageDescription.unsupported``);
+Unsupported physics prims and authored PhysX joint settings that are not simulated are reported
+once each, one line, as ``UnsupportedPrimWarning`` (and listed in ``StageDescription.unsupported``);
 non-physics prims (lights, materials, OmniGraph prims) are skipped quietly.
 """
 from __future__ import annotations
@@ -26,7 +26,7 @@ from .description import (AxisLimit, Articulation, Body, Drive, Joint, MassPrope
                           StageDescription, SurfaceGripper)
 from graphflow.messages import usd_message
 
-from .errors import StageError, UnsupportedPrimWarning
+from .errors import StageError, warn_unsupported
 from graphflow.poses import AXIS_VECTORS, Pose, compose, quat_normalize, quat_rotate, relative, twist_angle
 
 DEFAULT_GRAVITY = 9.81                 # m/s^2, along minus the up axis
@@ -112,7 +112,7 @@ class _Importer:
 
     def _unsupported(self, path: str, reason: str):
         self.description.unsupported.append((path, reason))
-        warnings.warn(UnsupportedPrimWarning(f"{self.label}: {path}: {reason}"), stacklevel=4)
+        warn_unsupported(self.label, path, reason)
 
     def _vec(self, v, scale: float | None = None):
         factor = self.mpu if scale is None else scale
@@ -173,6 +173,7 @@ class _Importer:
                 for path in paths:
                     self._unsupported(str(path), f"{_enum_name(kind)} is not simulated")
         self._surface_grippers()
+        self._solver_iterations(parsed.get(kinds.Scene))
         return self._in_path_order(self.description)
 
     def _prim_problems(self) -> list[str]:
@@ -204,6 +205,23 @@ class _Importer:
                 if radius is None or not (math.isfinite(radius) and radius > 0):
                     problems.append(f"{where}: a collider sphere of zero or invalid radius ({radius!r})")
         return problems
+
+    def _solver_iterations(self, scenes):
+        """Authored PhysX iteration counts (scene range; the largest per body or articulation)."""
+        counts = self.description.solver_iterations
+        if scenes and scenes[0]:
+            prim = self.stage.GetPrimAtPath(scenes[0][0])
+            for key, name in (("sceneMin", "minPositionIterationCount"), ("sceneMax", "maxPositionIterationCount")):
+                value = self._attribute(prim, f"physxScene:{name}")
+                if value is not None:
+                    counts[key] = int(value)
+        owners = [(path, "physxRigidBody") for path in self.description.bodies]
+        owners += [(articulation.path, "physxArticulation") for articulation in self.description.articulations]
+        authored = [self._attribute(self.stage.GetPrimAtPath(path), f"{prefix}:solverPositionIterationCount")
+                    for path, prefix in owners]
+        authored = [int(value) for value in authored if value is not None]
+        if authored:
+            counts["bodies"] = max(authored)
 
     @staticmethod
     def _in_path_order(description: StageDescription) -> StageDescription:
@@ -352,6 +370,10 @@ class _Importer:
 
         mass, diagonal, center, axes = UsdPhysics.RigidBodyAPI(prim).ComputeMassProperties(mass_information)
         mass = float(mass)
+        if not all(math.isfinite(float(c)) for c in center):
+            # MassAPI's "not authored" sentinel (-inf) comes back when no collider gave a centre of mass
+            # (the crab_hex plates, the Robotiq base mount): PhysX then uses the body origin
+            center = (0.0, 0.0, 0.0)
         diagonal = tuple(float(c) * self.mpu ** 2 for c in diagonal)
         principal_axes = _quat(axes)
         mass_api = UsdPhysics.MassAPI(prim)
@@ -435,6 +457,7 @@ class _Importer:
                       collision_enabled=bool(desc.collisionEnabled), enabled=bool(desc.jointEnabled),
                       exclude_from_articulation=bool(desc.excludeFromArticulation),
                       break_force=_finite_or_inf(desc.breakForce), break_torque=_finite_or_inf(desc.breakTorque))
+        self._unsimulated_joint_settings(prim, path)
         angular = kind == "revolute"
         if kind in ("revolute", "prismatic"):
             joint.axis = _enum_name(desc.axis)
@@ -466,6 +489,23 @@ class _Importer:
                 if drive is not None:
                     joint.drives[name] = drive
         self.description.joints[path] = joint
+
+    def _unsimulated_joint_settings(self, prim, path: str):
+        """Name the authored PhysX joint settings the PyBullet world does not simulate (non-zero values)."""
+        ignored = []
+        for attribute in prim.GetAuthoredAttributes():
+            name = attribute.GetName()
+            parts = name.split(":")
+            if name in ("physxJoint:armature", "physxJoint:jointFriction") or (
+                    parts[0] == "physxLimit" and parts[-1] in ("stiffness", "damping", "restitution",
+                                                               "bounceThreshold")):
+                value = attribute.Get()
+                if isinstance(value, (int, float)) and value != 0:
+                    ignored.append(name)
+        ignored += [relationship.GetName() for relationship in prim.GetAuthoredRelationships()
+                    if relationship.GetName().startswith("physxMimicJoint:")]       # a joint following another
+        if ignored:
+            self._unsupported(path, "PhysX joint settings not simulated: " + ", ".join(sorted(ignored)))
 
     def _articulations(self, articulations):
         if not articulations:
