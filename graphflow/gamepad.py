@@ -32,7 +32,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterable, Mapping, Protocol
 
-from .input_service import StepPolledDevice
+from .input_service import StepPolledDevice, timeline_entries
 
 STICK_AXES = ("Left Stick X Axis", "Left Stick Y Axis", "Right Stick X Axis", "Right Stick Y Axis")
 TRIGGERS = ("Left Trigger", "Right Trigger")
@@ -152,27 +152,10 @@ def parse_pad_spec(text: str) -> PadChange:
 
 def load_pad_timeline(path: str | Path) -> list[PadChange]:
     """Read a gamepad file: ``{"gamepad": [{"element": ..., "time": s, "value": v, "pad": 0}, ...]}``."""
-    from .files import FileProblem, read_json
-
-    try:
-        data = read_json(path)   # strict JSON, regular files only (never /dev/zero)
-    except FileProblem as error:
-        raise PadSpecError(str(error)) from None
-    entries = data.get("gamepad") if isinstance(data, dict) else None
-    if not isinstance(entries, list) or not all(isinstance(entry, dict) for entry in entries):
-        raise PadSpecError(f"{path}: expected an object with a 'gamepad' list of "
-                           "{\"element\": ..., \"time\": ..., \"value\": ...} entries")
-    changes = []
-    for index, entry in enumerate(entries):
-        where = f"{path}: gamepad[{index}]"
-        missing = sorted({"element", "time", "value"} - set(entry))
-        unknown = sorted(set(entry) - {"element", "time", "value", "pad"})
-        if missing:
-            raise PadSpecError(f"{where}: missing {', '.join(missing)}")
-        if unknown:
-            raise PadSpecError(f"{where}: unknown {', '.join(unknown)} (an entry has element, time, value, pad)")
-        changes.append(make_change(entry["element"], entry["value"], entry["time"], entry.get("pad", 0), where=where))
-    return changes
+    entries = timeline_entries(path, "gamepad", ("element", "time", "value"), ("pad",), PadSpecError,
+                               '{"element": ..., "time": ..., "value": ...}')
+    return [make_change(entry["element"], entry["value"], entry["time"], entry.get("pad", 0), where=where)
+            for where, entry in entries]
 
 
 def scripted_pad(path: str | Path | None, specs: Iterable[str] = ()) -> ScriptedPad | None:

@@ -49,3 +49,32 @@ class StepPolledDevice(Generic[Snapshot]):
     def _forget(self) -> None:
         """Drop the remembered state (the world was reset)."""
         raise NotImplementedError
+
+
+def timeline_entries(path, section: str, required: tuple[str, ...], optional: tuple[str, ...], error: type,
+                     example: str) -> list[tuple[str, dict]]:
+    """The entries of a scripted-input file ``{section: [{...}, ...]}`` with where each stands, for the caller to read.
+
+    Strict JSON, regular files only; a missing or unknown key is one ``error`` line naming the file and
+    the entry (the gamepad's and the ROS 2 topics' timelines share this shape).
+    """
+    from .files import FileProblem, read_json
+
+    try:
+        data = read_json(path)
+    except FileProblem as problem:
+        raise error(str(problem)) from None
+    entries = data.get(section) if isinstance(data, dict) else None
+    if not isinstance(entries, list) or not all(isinstance(entry, dict) for entry in entries):
+        raise error(f"{path}: expected an object with a '{section}' list of {example} entries")
+    result = []
+    for index, entry in enumerate(entries):
+        where = f"{path}: {section}[{index}]"
+        missing = sorted(set(required) - set(entry))
+        unknown = sorted(set(entry) - set(required) - set(optional))
+        if missing:
+            raise error(f"{where}: missing {', '.join(missing)}")
+        if unknown:
+            raise error(f"{where}: unknown {', '.join(unknown)} (an entry has {', '.join(required + optional)})")
+        result.append((where, entry))
+    return result

@@ -7,8 +7,8 @@ import ast
 from pathlib import Path
 
 import networkx as nx
+from conftest import ROOT
 
-ROOT = Path(__file__).resolve().parents[1]
 PACKAGE = ROOT / "graphflow"
 
 

@@ -7,11 +7,10 @@ import math
 import re
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
+from conftest import ROOT
 
-ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from benchmarks import NAMES  # noqa: E402  (the benchmarks package lives at the repository root)

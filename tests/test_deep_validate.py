@@ -2,12 +2,11 @@
 import json
 import subprocess
 import sys
-from pathlib import Path
 
 from graphflow.deep_validate import deep_validate
 from graphflow.document import load_document
+from conftest import ROOT
 
-ROOT = Path(__file__).resolve().parent.parent
 PICK_PLACE = ROOT / "graphs" / "ur10_pick_place.json"
 
 

@@ -1,8 +1,7 @@
 """The documents in the repository state their facts: none cites a file outside the repository."""
 import re
-from pathlib import Path
+from conftest import ROOT
 
-ROOT = Path(__file__).resolve().parents[1]
 OUTSIDE = re.compile(r"/work/|shared/reference|\.\./shared")
 
 

@@ -1,13 +1,12 @@
 """Graph documents: JSON round trip, atomic save, and every validation error reported at once."""
 import json
 import os
-from pathlib import Path
 
 import pytest
 
 from graphflow.document import GraphError, dumps, json_schema, load_document, parse_document, save_document
+from conftest import GRAPHS
 
-GRAPHS = Path(__file__).resolve().parent.parent / "graphs"
 
 
 def _document(nodes, connections=(), **extra):
@@ -149,5 +148,5 @@ def test_published_schema_is_valid_json_schema():
     import jsonschema
 
     jsonschema.Draft202012Validator.check_schema(json_schema())
-    packaged = Path(__file__).resolve().parent.parent / "graphflow" / "schema" / "graph.schema.json"
+    packaged = GRAPHS.parent / "graphflow" / "schema" / "graph.schema.json"
     assert json.loads(packaged.read_text()) == json_schema()

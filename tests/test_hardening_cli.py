@@ -14,8 +14,8 @@ from graphflow import cli, draw
 from graphflow.document import GraphError, load_document, parse_document, save_document
 from graphflow.executor import GraphRuntimeError
 from graphflow.runtime import Simulation
+from conftest import ROOT
 
-ROOT = Path(__file__).resolve().parent.parent
 COUNTER = ROOT / "graphs" / "counter_branch_print.json"
 PICK_PLACE = ROOT / "graphs" / "ur10_pick_place.json"
 ON_TICK = {"name": "tick", "type": "omni.graph.action.OnTick"}

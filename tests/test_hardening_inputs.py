@@ -13,8 +13,8 @@ import pytest
 from graphflow import cli
 from graphflow.document import GraphError, load_document, parse_document
 from graphflow.files import FileProblem, loads_strict
+from conftest import ROOT
 
-ROOT = Path(__file__).resolve().parent.parent
 ON_TICK = {"name": "tick", "type": "omni.graph.action.OnTick"}
 
 

@@ -1,12 +1,11 @@
 """Issue 15: the trace header lists the surface grippers that exist when the run starts (docs/trace.md)."""
 import io
 import json
-from pathlib import Path
 
 from graphflow.runtime import Simulation
 from graphflow.trace import TraceRecorder
+from conftest import ROOT
 
-ROOT = Path(__file__).resolve().parent.parent
 
 
 def test_header_lists_the_stage_gripper_before_any_node_touched_it():

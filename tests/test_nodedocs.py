@@ -1,12 +1,12 @@
 """docs/nodes.md is generated from the node specs: it must match them, and the command must write it safely."""
-from pathlib import Path
 
 from graphflow.cli import main
 from graphflow.nodedocs import REGENERATE_COMMAND, render_markdown
 from graphflow.registry import Registry, default_registry
 from graphflow.spec import Attribute, NodeSpec, NodeType
+from conftest import ROOT
 
-DOCS = Path(__file__).resolve().parents[1] / "docs" / "nodes.md"
+DOCS = ROOT / "docs" / "nodes.md"
 
 
 def test_docs_nodes_md_matches_the_registered_specs():

@@ -3,7 +3,6 @@ import json
 import math
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 
@@ -11,8 +10,8 @@ from graphflow.document import load_document
 from graphflow.overrides import PoseJitter, apply_node_overrides, parse_set
 from graphflow.randomize import scenario_for_run
 from graphflow.randomize import Randomization, load_randomization
+from conftest import ROOT
 
-ROOT = Path(__file__).resolve().parent.parent
 COUNTER = ROOT / "graphs" / "counter_branch_print.json"
 TUNED = ROOT / "graphs" / "ur10_pick_place_tuned.json"
 

@@ -9,7 +9,6 @@ import pytest
 from graphflow.executor import GraphRuntimeError
 from graphflow.testing import ExecState, NodeHarness
 
-ROOT = Path(__file__).resolve().parent.parent
 
 
 def graphflow(*args, cwd=None):

@@ -11,8 +11,8 @@ from pathlib import Path
 import pytest
 
 from graphflow.sweep import LocalPool, load_sweep, run_sweep, wilson_interval
+from conftest import ROOT
 
-ROOT = Path(__file__).resolve().parent.parent
 COUNTER = ROOT / "graphs" / "counter_branch_print.json"
 TUNED = ROOT / "graphs" / "ur10_pick_place_tuned.json"
 

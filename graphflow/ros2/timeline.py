@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Iterable
 
 from .messages import MessageError, complete, type_name
+from graphflow.input_service import timeline_entries
 
 
 class TopicSpecError(ValueError):
@@ -91,25 +92,10 @@ def parse_topic_spec(text: str) -> ScriptedMessage:
 
 def load_topic_timeline(path: str | Path) -> list[ScriptedMessage]:
     """Read a topics file (see the module docstring)."""
-    try:
-        data = json.loads(Path(path).read_text())
-    except (OSError, json.JSONDecodeError) as error:
-        raise TopicSpecError(f"{path}: {error}") from None
-    entries = data.get("topics") if isinstance(data, dict) else None
-    if not isinstance(entries, list) or not all(isinstance(entry, dict) for entry in entries):
-        raise TopicSpecError(f"{path}: expected an object with a 'topics' list of "
-                             "{\"topic\": ..., \"time\": ..., \"message\": {...}} entries")
-    result = []
-    for index, entry in enumerate(entries):
-        where = f"{path}: topics[{index}]"
-        missing = sorted({"topic", "time", "message"} - set(entry))
-        unknown = sorted(set(entry) - {"topic", "time", "message", "type"})
-        if missing:
-            raise TopicSpecError(f"{where}: missing {', '.join(missing)}")
-        if unknown:
-            raise TopicSpecError(f"{where}: unknown {', '.join(unknown)} (an entry has topic, time, type, message)")
-        result.append(make_entry(entry["topic"], entry["time"], entry["message"], entry.get("type"), where=where))
-    return result
+    entries = timeline_entries(path, "topics", ("topic", "time", "message"), ("type",), TopicSpecError,
+                               '{"topic": ..., "time": ..., "message": {...}}')
+    return [make_entry(entry["topic"], entry["time"], entry["message"], entry.get("type"), where=where)
+            for where, entry in entries]
 
 
 def scripted_topics(path: str | Path | None, specs: Iterable[str] = ()) -> ScriptedTopics | None:

@@ -4,13 +4,12 @@ The shared file is never written: an in-memory stage references it at
 ``/World`` and the grippers (and, for the two-gripper test, a second carriage)
 are authored on the in-memory root layer.
 """
-from pathlib import Path
 
 import pytest
 
 from graphflow.gripper.usd_schema import define_surface_gripper, register_schema
+from conftest import ISAAC_GANTRY
 
-ISAAC_GANTRY = Path("/work/shared/usda_samples/isaacsim_SurfaceGripper_gantry.usda")
 GRIPPER = "/World/SurfaceGripper"
 SECOND_GRIPPER = "/World/SurfaceGripper_01"
 FRAMES_PER_SECOND = 60

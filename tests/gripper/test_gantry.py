@@ -10,7 +10,7 @@ import pytest
 from graphflow.gripper import manager_for
 from graphflow.physics import create_world
 
-from gantry_scenes import GRIPPER, SECOND_GRIPPER, GantryDriver, isaac_gantry_stage
+from .gantry_scenes import GRIPPER, SECOND_GRIPPER, GantryDriver, isaac_gantry_stage
 
 CUBE_28 = "/World/Boxes/Cube_28"
 VIEW_PROPERTIES = dict(max_grip_distance=0.02, coaxial_force_limit=0.005, shear_force_limit=5.0, retry_interval=1.0)

@@ -1,7 +1,7 @@
 """Why a close failed or a grip ended: the reasons the status machine records where its status changes."""
 from graphflow.gripper.runtime import GripperStatus
 
-from test_status_machine import _gripper, _place
+from .test_status_machine import _gripper, _place
 
 
 def _place_box(world, gap):

@@ -7,6 +7,7 @@ import pytest
 from graphflow.gripper import usd_schema
 from graphflow.gripper.usd_schema import (apply_attachment_point_api, create_surface_gripper, define_surface_gripper,
                                           read_forward_axis, register_schema)
+from conftest import ISAAC_GANTRY
 
 
 @pytest.fixture
@@ -75,7 +76,7 @@ def test_create_surface_gripper_picks_the_next_free_name(stage):
 def test_isaac_files_load_with_the_schema():
     from pxr import Usd
 
-    gantry = Path("/work/shared/usda_samples/isaacsim_SurfaceGripper_gantry.usda")
+    gantry = ISAAC_GANTRY
     if not gantry.is_file():
         pytest.skip(f"{gantry} is not available")
     register_schema()

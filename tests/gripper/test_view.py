@@ -5,7 +5,7 @@ from graphflow.gripper import manager_for
 from graphflow.gripper.view import GripperView
 from graphflow.physics import create_world
 
-from view_scenes import view_stage
+from .view_scenes import view_stage
 
 
 @pytest.fixture

@@ -1,14 +1,13 @@
 """Articulations that are trees: branches, joints authored child-to-parent, floating bases, the krabby hexapod."""
 import math
-from pathlib import Path
 
 import pytest
 from pxr import Gf, Usd, UsdGeom, UsdPhysics, UsdShade
 
 from graphflow.physics import create_world
 from graphflow.poses import compose, quat_from_axis_angle, relative
+from conftest import USDA_SAMPLES as SAMPLES
 
-SAMPLES = Path(__file__).resolve().parents[3] / "shared" / "usda_samples"
 KRABBY = SAMPLES / "krabby_crab_simple.usda"
 
 

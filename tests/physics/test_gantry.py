@@ -1,15 +1,12 @@
 """Gantry stages: ours (graphflow/assets/gantry.usda) and Isaac Sim's own file, through the stage command."""
 import json
-import math
-from pathlib import Path
 
 import pytest
 
 from graphflow.physics import create_world, resolve_stage
 from graphflow.cli_stage import run_stage_command
+from conftest import ISAAC_GANTRY
 
-ISAAC_GANTRY = Path(__file__).resolve().parents[2] / ".." / "shared" / "usda_samples" / \
-    "isaacsim_SurfaceGripper_gantry.usda"
 
 
 def stage_json(capsys, path, seconds=None):

@@ -9,9 +9,9 @@ import pytest
 
 from graphflow.physics import create_world
 from graphflow.physics.health import NonFiniteState
+from conftest import CORPUS_FILES
 
-HUMANOID = Path(__file__).resolve().parents[3] / "shared" / "isaac_corpus" / "files" / "newton-physics__newton" / \
-    "humanoid.usda"
+HUMANOID = CORPUS_FILES / "newton-physics__newton" / "humanoid.usda"
 
 # a ball thrown at an infinite speed: its pose is not finite after the first step
 DIVERGING = '''#usda 1.0

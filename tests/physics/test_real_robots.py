@@ -12,8 +12,8 @@ import pytest
 from pxr import Gf, Usd, UsdGeom, UsdPhysics
 
 from graphflow.physics import UnsupportedPrimWarning, create_world
+from conftest import SHARED
 
-SHARED = Path(__file__).resolve().parents[3] / "shared"
 CORPUS = SHARED / "isaac_corpus" / "files"
 SAMPLES = SHARED / "usda_samples"
 

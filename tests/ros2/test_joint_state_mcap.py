@@ -17,8 +17,9 @@ mcap_reader = pytest.importorskip("mcap.reader")
 mcap_ros2_decoder = pytest.importorskip("mcap_ros2.decoder")
 
 from graphflow.cli import main  # noqa: E402
+from conftest import CORPUS_FILES as CORPUS
+from conftest import GRAPHS
 
-CORPUS = Path(__file__).resolve().parents[2].parent / "shared" / "isaac_corpus" / "files"
 LITE6_GRAPH = CORPUS / "pastoriomarco__isaac_sim_custom_examples" / "ros_joint_states.usda"
 UR10_JOINTS = ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint",
                "wrist_1_joint", "wrist_2_joint", "wrist_3_joint"]
@@ -98,7 +99,7 @@ def test_recording_never_overwrites(tmp_path, capsys):
 
 
 def test_shipped_joint_state_graph_publishes_clock_and_follows_its_timeline(tmp_path):
-    root = Path(__file__).resolve().parents[2] / "graphs"
+    root = GRAPHS
     recording = tmp_path / "run.mcap"
     assert main(["run", str(root / "ros2_joint_states.json"), "--topics", str(root / "ros2_joint_states.topics.json"),
                  "--record-topics", str(recording)]) == 0

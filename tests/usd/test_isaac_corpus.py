@@ -10,13 +10,12 @@ belongs to the physics tests). Skips cleanly when the folder is absent.
 """
 import json
 from dataclasses import dataclass
-from pathlib import Path
 
 import pytest
 
 from graphflow.cli import main
+from conftest import ISAAC_CORPUS as CORPUS
 
-CORPUS = Path(__file__).resolve().parents[3] / "shared" / "isaac_corpus"
 pytestmark = pytest.mark.skipif(not (CORPUS / "manifest.json").is_file(), reason="../shared/isaac_corpus is absent")
 TICKS = 120
 

@@ -19,8 +19,8 @@ from graphflow.cli import main
 from graphflow.gamepad import attach_gamepad, gamepad_for, scripted_pad
 from graphflow.gripper import manager_for
 from graphflow.runtime import Simulation
+from conftest import USDA_SAMPLES as SAMPLES
 
-SAMPLES = Path(__file__).resolve().parents[3] / "shared" / "usda_samples"
 GANTRY = SAMPLES / "isaacsim_SurfaceGripper_gantry.usda"
 GRIPPER = "/World/SurfaceGripper"
 BOX = "/World/Boxes/Cube_28"

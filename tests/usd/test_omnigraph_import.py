@@ -2,14 +2,13 @@
 import json
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 
 from graphflow.testing import GraphHarness
 from graphflow.usd.omnigraph import ImportProblem, import_graph
+from conftest import USDA_SAMPLES as SAMPLES
 
-SAMPLES = Path(__file__).resolve().parents[3] / "shared" / "usda_samples"
 
 TINY_GRAPH = '''#usda 1.0
 def Xform "World"

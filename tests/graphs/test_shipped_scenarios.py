@@ -3,11 +3,10 @@
 The passing ones run as test items of the pytest plugin (graphs/ is in testpaths)."""
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
+from conftest import ROOT
 
-ROOT = Path(__file__).resolve().parent.parent
 SCENARIOS = ROOT / "graphs" / "scenarios"
 
 

@@ -8,10 +8,10 @@ import pytest
 
 from graphflow.plot import timeline, timeline_figure
 from graphflow.trace import read_trace
+from conftest import ROOT
 
 matplotlib = pytest.importorskip("matplotlib")
 
-ROOT = Path(__file__).resolve().parents[2]
 GRIPPER = "/World/ur10/ee_link/SurfaceGripper"
 
 

@@ -1,13 +1,12 @@
 """The pick-and-place demo's trace tells its story: phases in order, the cube gripped, lifted and let go."""
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 
 from graphflow.trace import read_trace
+from conftest import ROOT
 
-ROOT = Path(__file__).resolve().parents[2]
 PICK_PLACE = ROOT / "graphs" / "ur10_pick_place.json"
 GRIPPER = "/World/ur10/ee_link/SurfaceGripper"
 

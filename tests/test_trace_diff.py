@@ -5,8 +5,8 @@ import sys
 from pathlib import Path
 
 from graphflow.trace import first_difference, read_trace
+from conftest import ROOT
 
-ROOT = Path(__file__).resolve().parents[2]
 COUNTER_GRAPH = ROOT / "graphs" / "counter_branch_print.json"
 
 

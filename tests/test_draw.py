@@ -3,15 +3,14 @@ import re
 import subprocess
 import sys
 import xml.etree.ElementTree as ElementTree
-from pathlib import Path
 
 import pytest
 
 from graphflow import draw
 from graphflow.document import load_document
 from graphflow.testing import GraphHarness
+from conftest import ROOT
 
-ROOT = Path(__file__).resolve().parents[2]
 COUNTER_GRAPH = ROOT / "graphs" / "counter_branch_print.json"
 SVG = "{http://www.w3.org/2000/svg}"
 EXEC_EDGES = {("on_tick.outputs:tick", "counter.inputs:execIn"), ("counter.outputs:execOut", "branch.inputs:execIn"),

@@ -1,15 +1,14 @@
 """The robot demo graphs in graphs/, run headless to the end: where the cubes end up, and what was printed."""
 import json
 import math
-from pathlib import Path
 
 import pytest
 
 from graphflow.document import dumps, load_document, parse_document
 from graphflow.keyboard import attach_keyboard, scripted_keys
 from graphflow.runtime import Simulation
+from conftest import GRAPHS
 
-GRAPHS = Path(__file__).resolve().parents[2] / "graphs"
 ROBOT_GRAPHS = ["ur10_pick_place.json", "ur10_pick_place_tuned.json", "ur10_stacking.json", "gantry_keyboard.json"]
 
 

@@ -1,12 +1,11 @@
 """The progress line: simulated time, ticks per second and the controller's phase on a terminal; quiet otherwise."""
 import subprocess
 import sys
-from pathlib import Path
 
 from graphflow.cli import _Progress
 from graphflow.testing import GraphHarness
+from conftest import ROOT
 
-ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_status_shows_time_rate_and_the_phase_of_a_node_with_an_event_name():

@@ -1,14 +1,13 @@
 """graphflow.PickPlaceSequence: tasks in order, each to a place position and yaw; the pyramid demo graph."""
 import math
-from pathlib import Path
 
 import pytest
 
 from graphflow.document import GraphError, dumps, load_document, parse_document
 from graphflow.runtime import Simulation
 from graphflow_nodes.pick_place_sequence import shortest_turn, yaw_of
+from conftest import GRAPHS
 
-GRAPHS = Path(__file__).resolve().parents[2] / "graphs"
 PYRAMID_PLACES = [(0.5, 0.245, 0.025), (0.5, 0.3, 0.025), (0.5, 0.355, 0.025),
                   (0.5, 0.2725, 0.075), (0.5, 0.3275, 0.075), (0.5, 0.3, 0.125)]
 

@@ -3,14 +3,13 @@ import io
 import json
 import subprocess
 import sys
-from pathlib import Path
 
 from graphflow.document import load_document
 from graphflow.runtime import Simulation
 from graphflow.testing import GraphHarness
 from graphflow.trace import TraceRecorder, read_trace
+from conftest import ROOT
 
-ROOT = Path(__file__).resolve().parents[2]
 COUNTER_GRAPH = ROOT / "graphs" / "counter_branch_print.json"
 
 
