@@ -51,7 +51,7 @@ def create_world_for(document: GraphDocument, *, gui: bool = False) -> World:
     from . import physics  # only here: core-only graphs never import pybullet or pxr
 
     return physics.create_world(physics.resolve_stage(stage, document.base_dir),
-                                time_step=settings.get("timeStep"), substeps=settings.get("substeps", 1), gui=gui)
+                                time_step=settings.get("timeStep"), substeps=settings.get("substeps"), gui=gui)
 
 
 class Simulation:

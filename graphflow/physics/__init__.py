@@ -6,11 +6,13 @@ This is the only package that imports ``pybullet``; it is imported lazily, so
 Public API
 ==========
 
-``create_world(stage=None, *, time_step=None, substeps=1, gui=False) -> PyBulletWorld``
+``create_world(stage=None, *, time_step=None, substeps=None, gui=False) -> PyBulletWorld``
     *stage*: a ``.usd``/``.usda`` path, ``asset:NAME`` (a packaged stage), an
     open ``Usd.Stage``, or None for an empty world with default gravity. *time_step* None = the stage's PhysicsScene
     ``physxScene:timeStepsPerSecond`` if authored, else 1/60 s (Isaac Sim's
-    default). A world is a context manager; ``close()`` frees its client.
+    default). *substeps* None = enough PyBullet steps per stage step that each is at most
+    1/240 s (4 at 60 Hz: see ``graphflow.physics.contacts``). A world is a context manager;
+    ``close()`` frees its client.
     A broken stage raises ``StageError`` (a ``ValueError``) naming file and prim.
 
 ``resolve_stage(reference, base_dir=None) -> Path`` / ``asset_path(name) -> Path``
@@ -88,7 +90,7 @@ __all__ = ["create_world", "StageError", "UnsupportedPrimWarning", "asset_path",
            "PyBulletWorld", "RayHit", "Contact", "ATTRIBUTES"]
 
 
-def create_world(stage=None, *, time_step: float | None = None, substeps: int = 1, gui: bool = False):
+def create_world(stage=None, *, time_step: float | None = None, substeps: int | None = None, gui: bool = False):
     """Load a stage (path or ``Usd.Stage``; None = empty world) into a new PyBullet world."""
     from graphflow.usd.description import StageDescription
     from graphflow.usd.physics_import import load_description, open_stage

@@ -35,6 +35,8 @@ from graphflow.usd.physics_import import joint_frame_offset
 from graphflow.usd.transforms import (AXIS_VECTORS, IDENTITY_POSE, Pose, compose, invert, quat_multiply,
                                       quat_from_axis_angle)
 
+from .contacts import anchor_friction, plane_box
+
 CONE_SEGMENTS = 24                 # a cone collider is the convex hull of this many base points and its apex
 CONSTRAINT_MAX_FORCE = 1.0e9       # joints between free bodies are rigid (see pybullet_notes §4 default quirk)
 REVOLUTE_PIN_HALF_SPAN = 0.25      # m: a free revolute joint is two pins this far either side on its axis
@@ -149,8 +151,10 @@ class SceneBuilder:
         single = shapes[0] if len(shapes) == 1 else None
         if single is not None and single.kind in ("plane", "triangle_mesh"):
             pose = compose(frame, single.pose)
-            if single.kind == "plane":
-                return p.createCollisionShape(p.GEOM_PLANE, planeNormal=AXIS_VECTORS[single.axis],
+            if single.kind == "plane":   # a large box: PyBullet's plane shape lets contacts sink and creep
+                half_extents, centre = plane_box(single.axis)
+                pose = compose(pose, (tuple(centre), (0.0, 0.0, 0.0, 1.0)))
+                return p.createCollisionShape(p.GEOM_BOX, halfExtents=half_extents,
                                               collisionFramePosition=pose[0], collisionFrameOrientation=pose[1])
             return p.createCollisionShape(p.GEOM_MESH, vertices=[list(v) for v in single.points],
                                           indices=[i for tri in single.triangles for i in tri],
@@ -208,6 +212,8 @@ class SceneBuilder:
                          linearDamping=body.linear_damping, angularDamping=body.angular_damping)
         if body.mass is not None and body.kind == "dynamic":
             p.changeDynamics(body_id, link, localInertiaDiagonal=list(body.mass.diagonal_inertia))
+        if body.kind == "dynamic":
+            anchor_friction(p, body_id, link)
 
     def _register(self, body: Body, body_id: int, link: int, inertial_in_prim: Pose, articulation: str | None,
                   mass: float):

@@ -17,12 +17,13 @@ from graphflow.usd.description import StageDescription
 from graphflow.usd.transforms import IDENTITY_POSE, Pose, compose, invert, quat_rotate, relative
 from graphflow.world import Services, WorldError
 
+from .contacts import internal_substeps, solver_iterations
+from .drive_law import MOTOR_MAX_FORCE, drive_efforts, is_stiff, motor_velocity
 from .native_output import native_stdout_silenced
 from .builder import ArticulationHandle, BodyHandle, BuiltScene, SceneBuilder
 
 DEFAULT_TIME_STEP = 1.0 / 60.0      # Isaac Sim's default physics rate
 SOLVER_ITERATIONS = 50              # PyBullet's default, stated so it stays fixed
-MOTOR_MAX_FORCE = 1.0e9             # N or N m: a floating-base drive without a force limit
 
 
 class _BoundClient(BulletClient):
@@ -84,17 +85,19 @@ class PyBulletWorld:
     """
 
     def __init__(self, description: StageDescription, stage=None, *, time_step: float | None = None,
-                 substeps: int = 1, gui: bool = False):
+                 substeps: int | None = None, gui: bool = False):
         chosen = time_step if time_step is not None else (description.time_step or DEFAULT_TIME_STEP)
         if not chosen > 0:
             raise ValueError(f"time step must be positive, got {chosen}")
+        if substeps is None:
+            substeps = internal_substeps(chosen)
         if substeps < 1:
             raise ValueError(f"substeps must be at least 1, got {substeps}")
         self.description = description
         self.stage = stage
         self.time_step = float(chosen)
         self.substeps = int(substeps)
-        self.solver_iterations = SOLVER_ITERATIONS
+        self.solver_iterations = solver_iterations(description.solver_iterations, SOLVER_ITERATIONS)
         self.time = 0.0
         self.step_index = 0
         self.playing = True
@@ -124,6 +127,7 @@ class PyBulletWorld:
         self._gravity_plan: list[tuple] | None = None      # from _gravity_off and masses, rebuilt when they change
         self._pending_forces: list[tuple[int, int, tuple, tuple | None]] = []
         self._offsets: dict[str, tuple[str | None, Pose]] = {}
+        self._joint_gravity_plans: dict[str, list] = {}      # per articulation: (link, m g) of links with gravity
 
     @property
     def attachment_joints(self):
@@ -152,8 +156,9 @@ class PyBulletWorld:
         """One fixed step (``substeps`` PyBullet steps), then the services. No-op while paused."""
         if not self.playing:
             return
+        torques = self._drive_torques()      # once per stage step, held over its substeps
         for _ in range(self.substeps):
-            self._apply_pre_step_forces(self.time_step / self.substeps)
+            self._apply_pre_step_forces(torques)
             self.client.stepSimulation()
         self._pending_forces = []
         self.step_index += 1
@@ -182,15 +187,17 @@ class PyBulletWorld:
         self.close()
 
     # -- per-step forces: drives, gravity switches, queued forces -----------------------------------
-    def _apply_pre_step_forces(self, dt: float):
+    def _drive_torques(self) -> list[tuple[ArticulationHandle, list[float]]]:
+        """Joint torques of every driven (or effort-commanded) articulation for this stage step."""
+        return [(articulation, self._drive_efforts(articulation, self.time_step))
+                for articulation in self.scene.articulations.values()
+                if any(d is not None for d in articulation.drives) or any(articulation.efforts)]
+
+    def _apply_pre_step_forces(self, torques: list[tuple[ArticulationHandle, list[float]]]):
         client = self.client
-        for articulation in self.scene.articulations.values():
-            if not articulation.fixed_base:
-                self._drive_floating(articulation, dt)
-            elif any(d is not None for d in articulation.drives) or any(articulation.efforts):
-                client.setJointMotorControlArray(articulation.body_id, articulation.joint_indices,
-                                                 pybullet.TORQUE_CONTROL,
-                                                 forces=self._drive_efforts(articulation, dt))
+        for articulation, forces in torques:
+            client.setJointMotorControlArray(articulation.body_id, articulation.joint_indices,
+                                             pybullet.TORQUE_CONTROL, forces=forces)
         self._cancel_gravity()
         for body_id, link, force, position in self._pending_forces:
             client.applyExternalForce(body_id, link, force, position, pybullet.WORLD_FRAME)
@@ -225,107 +232,71 @@ class PyBulletWorld:
         return [tuple(entry) for entry in plan.values()]
 
     def _drive_efforts(self, articulation: ArticulationHandle, dt: float) -> list[float]:
-        """Joint efforts of the drives: a PD law integrated implicitly (backward Euler).
-
-        A force drive's effort is f = k (q* - q - dt v') + d (v* - v'), with v' the
-        velocity at the end of the step. With M the joint-space inertia matrix and
-        D = diag(dt d + dt^2 k) this gives (M + D) a = r, r = k (q* - q - dt v) +
-        d (v* - v), and f = M a: stable for any gain at 60 Hz, where an explicit
-        spring (or one using only M's diagonal) blows up on a stiff, coupled arm.
-        Acceleration drives (PhysX semantics: gains per unit of inertia) use the
-        joint's own inertia M_ii: f = M_ii r / (1 + dt d + dt^2 k). Feed-forward
-        efforts are added, then each result is clamped to the drive's max force.
-        Targets beyond the joint's limits are pursued only up to the limit, so a
-        stiff drive does not push the joint through PyBullet's (soft) limit.
-        A joint's max velocity limits the position error the spring sees to
-        v_max (d + dt k) / k, where the drive's pull and damping balance at v_max (PyBullet's
-        own velocity clamp fights an implicit drive, so it is not used).
-        """
+        """Joint efforts (PyBullet coordinates) of the drives and feed-forward efforts: ``drive_law``."""
         states = self.client.getJointStates(articulation.body_id, articulation.joint_indices)
-        signs = articulation.signs
-        count = len(states)
+        signs = np.array(articulation.signs)
+        positions = signs * [s[0] for s in states]
+        velocities = signs * [s[1] for s in states]
         inertia = self._joint_inertia(articulation, [s[0] for s in states])
-        efforts = list(articulation.efforts)
-        residual = [0.0] * count
-        implicit = [0.0] * count
-        force_driven = []
-        for dof, drive in enumerate(articulation.drives):
-            if drive is None:
-                continue
-            k, d = drive.stiffness, drive.damping
-            sign, state = signs[dof], states[dof]
-            position, velocity = sign * state[0], sign * state[1]
-            error = min(max(drive.target_position, drive.lower), drive.upper) - position
-            if drive.max_velocity is not None and k > 0 and d > 0:
-                limit = drive.max_velocity * (d + dt * k) / k
-                error = max(-limit, min(limit, error))
-            r = k * (error - dt * velocity) + d * (drive.target_velocity - velocity)
-            if drive.acceleration:
-                efforts[dof] += float(inertia[dof, dof]) * r / (1.0 + dt * d + dt * dt * k)
-            else:
-                residual[dof] = r
-                implicit[dof] = dt * d + dt * dt * k
-                force_driven.append(dof)
-        if force_driven:
-            if -1.0 in signs:   # signs flip rows and columns of M alike, so M in USD coordinates is S M S
-                inertia = inertia * np.outer(signs, signs)
-            matrix = inertia + np.diag(implicit)
-            acceleration = np.linalg.solve(matrix, residual).tolist()
-            for dof in force_driven:
-                efforts[dof] += residual[dof] - implicit[dof] * acceleration[dof]
-        result = []
-        for dof, drive in enumerate(articulation.drives):
-            effort = efforts[dof]
-            if drive is not None:
-                effort = max(-drive.max_force, min(drive.max_force, effort))
-            result.append(signs[dof] * effort)
-        return result
+        if -1.0 in articulation.signs:   # signs flip rows and columns of M alike, so M in USD coordinates is S M S
+            inertia = inertia * np.outer(signs, signs)
+        drives = self._drive_stiff_joints_by_motors(articulation, states, inertia, dt)
+        load = signs * self._joint_gravity(articulation, [s[0] for s in states])
+        efforts = drive_efforts(drives, articulation.efforts, positions, velocities, inertia, load, dt)
+        return (signs * efforts).tolist()
 
-    def _drive_floating(self, articulation: ArticulationHandle, dt: float):
-        """Drives of a floating-base articulation: PyBullet joint motors, solved with the contacts.
+    def _joint_gravity(self, articulation: ArticulationHandle, positions: list[float]) -> np.ndarray:
+        """Generalised gravity force on the DOFs (PyBullet coordinates): sum of J^T m g over the links
+        whose gravity is on (the base's weight goes to whatever holds the base)."""
+        plan = self._joint_gravity_plans.get(articulation.path)
+        if plan is None:
+            gravity = np.array(self.description.gravity)
+            plan = self._joint_gravity_plans[articulation.path] = [
+                (handle.link, handle.mass * gravity) for path, handle in sorted(self.scene.bodies.items())
+                if handle.articulation == articulation.path and handle.link >= 0 and handle.kind == "dynamic"
+                and path not in self._gravity_off]
+        load = np.zeros(len(positions))
+        zeros = [0.0] * len(positions)
+        offset = 0 if articulation.fixed_base else 6
+        for link, weight in plan:
+            linear, _angular = self.client.calculateJacobian(articulation.body_id, link, (0.0, 0.0, 0.0),
+                                                             positions, zeros, zeros)
+            load += weight @ np.array(linear)[:, offset:]
+        return load
 
-        A legged robot stands on its drives: the load on a leg is the ground's reaction, which
-        only the constraint solver knows, in the same step. The torque drive of
-        ``_drive_efforts`` cannot include it: it holds a static load L with k M / (M + D)
-        instead of k, and for light legs under stiff gains (the krabby: M ~ 0.1 kg m^2,
-        D ~ 6e4) the legs folded by 0.35 rad. Here each drive is PhysX's implicit drive
-        f = k (q* - q - dt v') + d (v* - v') taken in its stiff limit: a velocity motor with
-        target v' = (k (q* - q) + d v*) / (dt k + d) (the velocity at which f = 0; max velocity
-        clamps it) and the drive's max force, solved with the contacts. Both drive types have
-        this target. It is exact as long as the drive is stiff for the link (dt (dt k + d) >> M,
-        i.e. D >> M); a soft drive is then rigid against loads, where PhysX would give way by L / k.
-        Feed-forward efforts are added as joint torques.
-        """
-        client = self.client
+    def _drive_stiff_joints_by_motors(self, articulation: ArticulationHandle, states, inertia, dt: float):
+        """Set velocity motors for drives far stiffer than their links (``drive_law``); return the
+        drives left to the torque law (None where a motor drives the joint)."""
         signs = articulation.signs
-        states = client.getJointStates(articulation.body_id, articulation.joint_indices)
-        indices, velocities, forces = [], [], []
+        remaining, velocities, forces = [], [], []
         for dof, drive in enumerate(articulation.drives):
-            if drive is None:
+            if drive is None or not is_stiff(drive, inertia[dof, dof], dt):
+                remaining.append(drive)
+                velocities.append(0.0)
+                forces.append(0.0)
                 continue
-            k, d = drive.stiffness, drive.damping
-            if not dt * k + d > 0.0:
-                continue
-            error = min(max(drive.target_position, drive.lower), drive.upper) - signs[dof] * states[dof][0]
-            velocity = (k * error + d * drive.target_velocity) / (dt * k + d)
-            if drive.max_velocity is not None:
-                velocity = max(-drive.max_velocity, min(drive.max_velocity, velocity))
-            indices.append(articulation.joint_indices[dof])
+            remaining.append(None)
+            last_force = signs[dof] * states[dof][3]
+            velocity = motor_velocity(drive, inertia[dof, dof], signs[dof] * states[dof][0], last_force, dt)
             velocities.append(signs[dof] * velocity)
             forces.append(min(drive.max_force, MOTOR_MAX_FORCE))
-        if indices:
-            client.setJointMotorControlArray(articulation.body_id, indices, pybullet.VELOCITY_CONTROL,
-                                             targetVelocities=velocities, forces=forces)
-        if any(articulation.efforts):
-            client.setJointMotorControlArray(articulation.body_id, articulation.joint_indices,
-                                             pybullet.TORQUE_CONTROL,
-                                             forces=[sign * effort for sign, effort in zip(signs, articulation.efforts)])
+        self.client.setJointMotorControlArray(articulation.body_id, articulation.joint_indices,
+                                              pybullet.VELOCITY_CONTROL, targetVelocities=velocities, forces=forces)
+        return remaining
 
     def _joint_inertia(self, articulation: ArticulationHandle, positions: list[float]) -> np.ndarray:
-        """The joint-space inertia matrix of the articulation's DOFs (PyBullet coordinates)."""
+        """The joint-space inertia matrix of the articulation's DOFs (PyBullet coordinates).
+
+        For a floating base, the inertia the joints feel with the base free (the Schur complement):
+        the smallest the joints can feel (contacts only add to it), which keeps the drive's load
+        estimate from over-correcting (``drive_law``).
+        """
         matrix = np.array(self.client.calculateMassMatrix(articulation.body_id, positions))
-        offset = 0 if articulation.fixed_base else 6
-        return matrix[offset:offset + len(positions), offset:offset + len(positions)]
+        if articulation.fixed_base:
+            return matrix
+        base, joints = matrix[:6, :6], matrix[6:, 6:]
+        coupling = matrix[6:, :6]
+        return joints - coupling @ np.linalg.solve(base, coupling.T)
 
     # -- backend-internal API (gripper engineer) ------------------------------------------------
     def body_link(self, prim_path: str) -> tuple[int, int]:
@@ -351,6 +322,7 @@ class PyBulletWorld:
         elif handle.kind == "dynamic":
             self._gravity_off.add(handle.path)
         self._gravity_plan = None
+        self._joint_gravity_plans = {}
 
     # -- lookups ---------------------------------------------------------------------------------
     def _body(self, prim_path: str) -> BodyHandle:
@@ -647,6 +619,7 @@ class PyBulletWorld:
                                   localInertiaDiagonal=[c * mass / handle.mass for c in inertia])
             handle.mass = mass
             self._gravity_plan = None
+            self._joint_gravity_plans = {}
             return
         vector = tuple(float(c) for c in value)
         if name in ("xformOp:translate", "xformOp:orient"):

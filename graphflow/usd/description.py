@@ -151,6 +151,9 @@ class StageDescription:
     meters_per_unit: float
     gravity: Vec3
     time_step: float | None                 # from physxScene:timeStepsPerSecond
+    # authored solver iteration counts: "sceneMin"/"sceneMax" (physxScene:{min,max}PositionIterationCount),
+    # "bodies" (the largest physx{RigidBody,Articulation}:solverPositionIterationCount)
+    solver_iterations: dict[str, int] = field(default_factory=dict)
     bodies: dict[str, Body] = field(default_factory=dict)
     joints: dict[str, Joint] = field(default_factory=dict)
     articulations: list[Articulation] = field(default_factory=list)

@@ -172,7 +172,25 @@ class _Importer:
                 for path in paths:
                     self._unsupported(str(path), f"{_enum_name(kind)} is not simulated")
         self._surface_grippers()
+        self._solver_iterations(parsed.get(kinds.Scene))
         return self._in_path_order(self.description)
+
+    def _solver_iterations(self, scenes):
+        """Authored PhysX iteration counts (scene range; the largest per body or articulation)."""
+        counts = self.description.solver_iterations
+        if scenes and scenes[0]:
+            prim = self.stage.GetPrimAtPath(scenes[0][0])
+            for key, name in (("sceneMin", "minPositionIterationCount"), ("sceneMax", "maxPositionIterationCount")):
+                value = self._attribute(prim, f"physxScene:{name}")
+                if value is not None:
+                    counts[key] = int(value)
+        owners = [(path, "physxRigidBody") for path in self.description.bodies]
+        owners += [(articulation.path, "physxArticulation") for articulation in self.description.articulations]
+        authored = [self._attribute(self.stage.GetPrimAtPath(path), f"{prefix}:solverPositionIterationCount")
+                    for path, prefix in owners]
+        authored = [int(value) for value in authored if value is not None]
+        if authored:
+            counts["bodies"] = max(authored)
 
     @staticmethod
     def _in_path_order(description: StageDescription) -> StageDescription:

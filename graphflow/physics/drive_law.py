@@ -1,0 +1,89 @@
+"""The joint drive law: PhysX's implicit PD drive, solved with the gravity load the joints carry.
+
+A force drive (stiffness k, damping d) exerts f = k (q* - q - dt v') + d (v* - v') with v' the
+joint velocity at the end of the step (backward Euler: stable for any gain). With M the
+joint-space inertia and tau the loads on the joints, v' = v + dt a with (M + D) a = r + tau,
+D = diag(dt d + dt^2 k), r = k (q* - q - dt v) + d (v* - v), and f = r - D a. At rest a = 0,
+so a static load L is held by k e = L: the sag L / k PhysX gives. Leaving tau out (graphflow
+before issue 12) held it by k M / (M + D) instead: 6x too soft for a 2 kg load at k = 4e4,
+d = 4e3.
+
+tau is the weight of the links beyond each joint, sum of J_i^T m_i g over the articulation's
+links whose gravity is on (links with ``physxRigidBody:disableGravity`` carry none), plus the
+feed-forward efforts. Loads from contacts, a held object or applied forces are not modelled:
+against those a drive is as stiff as k M / (M + D) (a measured load estimate was tried: a joint
+blocked by a contact then kept whatever force it had, so a gripper that hit a box stayed down).
+
+A drive far stiffer than its link on a floating base (D > STIFF_RATIO M, the krabby's legs:
+D / M ~ 1e5) carries the robot's weight through the ground, which only the contact solver
+knows within the step: computed outside it, the legs fold on landing and then kick the robot
+into the air. Such drives are PyBullet velocity motors solved with the contacts, aiming at the
+velocity the implicit law gives for the force the motor needed last step:
+v' = (k (q* - q) + d v* - f_prev) / (dt k + d). At rest v' = 0 where k e = f_prev = L: the sag
+is again L / k. (A motor standing for a drive is stable when D > 2 M.)
+
+Acceleration drives are PhysX's per-unit-inertia drives: gains k M_ii and d M_ii. The drive
+force is clamped to its max force; feed-forward efforts are added on top.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+STIFF_RATIO = 4.0          # a floating-base drive with D > STIFF_RATIO M is a velocity motor
+MOTOR_MAX_FORCE = 1.0e9    # N or N m: a motor for a drive without a force limit
+
+
+def force_gains(drive, joint_inertia: float) -> tuple[float, float]:
+    """(k, d) in force units: an acceleration drive's gains are per unit of the joint's inertia."""
+    if drive.acceleration:
+        return drive.stiffness * joint_inertia, drive.damping * joint_inertia
+    return drive.stiffness, drive.damping
+
+
+def is_stiff(drive, joint_inertia: float, dt: float) -> bool:
+    """Whether a drive is far stiffer than its link (D = dt d + dt^2 k > STIFF_RATIO M)."""
+    k, d = force_gains(drive, joint_inertia)
+    return dt * d + dt * dt * k > STIFF_RATIO * joint_inertia
+
+
+def motor_velocity(drive, joint_inertia: float, position: float, last_force: float, dt: float) -> float:
+    """The velocity a motor standing for a stiff drive aims at, given the force it needed last step."""
+    k, d = force_gains(drive, joint_inertia)
+    error = min(max(drive.target_position, drive.lower), drive.upper) - position
+    velocity = (k * error + d * drive.target_velocity - last_force) / (dt * k + d)
+    if drive.max_velocity is not None:
+        velocity = max(-drive.max_velocity, min(drive.max_velocity, velocity))
+    return velocity
+
+
+def drive_efforts(drives, feed_forward, positions, velocities, inertia: np.ndarray, load: np.ndarray,
+                  dt: float) -> np.ndarray:
+    """Joint efforts for one step of length *dt*, in USD joint coordinates.
+
+    *drives*: per DOF a ``DriveState`` or None (no drive, or a motor drives it); *feed_forward*:
+    efforts set by nodes; *positions*, *velocities*: joint state now; *inertia*: the joint-space
+    inertia matrix; *load*: the joints' gravity load.
+    """
+    count = len(velocities)
+    residual = np.zeros(count)
+    implicit = np.zeros(count)
+    for dof, drive in enumerate(drives):
+        if drive is None:
+            continue
+        k, d = force_gains(drive, inertia[dof, dof])
+        velocity = velocities[dof]
+        error = min(max(drive.target_position, drive.lower), drive.upper) - positions[dof]
+        if drive.max_velocity is not None and k > 0 and d > 0:
+            limit = drive.max_velocity * (d + dt * k) / k        # where the drive's pull and damping balance at v_max
+            error = max(-limit, min(limit, error))
+        residual[dof] = k * (error - dt * velocity) + d * (drive.target_velocity - velocity)
+        implicit[dof] = dt * d + dt * dt * k
+    feed_forward = np.asarray(feed_forward, dtype=float)
+    acceleration = np.linalg.solve(inertia + np.diag(implicit), residual + feed_forward + load)
+    efforts = residual - implicit * acceleration
+    for dof, drive in enumerate(drives):
+        if drive is None:
+            efforts[dof] = 0.0
+        else:
+            efforts[dof] = max(-drive.max_force, min(drive.max_force, efforts[dof]))
+    return efforts + feed_forward
