@@ -27,6 +27,8 @@ force is clamped to its max force; feed-forward efforts are added on top.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 STIFF_RATIO = 4.0          # a floating-base drive with D > STIFF_RATIO M is a velocity motor
@@ -57,8 +59,8 @@ def motor_velocity(drive, joint_inertia: float, position: float, last_force: flo
 
 
 def drive_efforts(drives, feed_forward, positions, velocities, inertia: np.ndarray, load: np.ndarray,
-                  dt: float) -> np.ndarray:
-    """Joint efforts for one step of length *dt*, in USD joint coordinates.
+                  dt: float) -> tuple[np.ndarray, np.ndarray]:
+    """(joint efforts, predicted joint accelerations) for one step of length *dt*, in USD joint coordinates.
 
     *drives*: per DOF a ``DriveState`` or None (no drive, or a motor drives it); *feed_forward*:
     efforts set by nodes; *positions*, *velocities*: joint state now; *inertia*: the joint-space
@@ -81,9 +83,14 @@ def drive_efforts(drives, feed_forward, positions, velocities, inertia: np.ndarr
     feed_forward = np.asarray(feed_forward, dtype=float)
     acceleration = np.linalg.solve(inertia + np.diag(implicit), residual + feed_forward + load)
     efforts = residual - implicit * acceleration
+    clamped = False
     for dof, drive in enumerate(drives):
         if drive is None:
             efforts[dof] = 0.0
-        else:
-            efforts[dof] = max(-drive.max_force, min(drive.max_force, efforts[dof]))
-    return efforts + feed_forward
+        elif abs(efforts[dof]) > drive.max_force:
+            efforts[dof] = math.copysign(drive.max_force, efforts[dof])
+            clamped = True
+    efforts += feed_forward
+    if clamped:     # a saturated drive: the joints accelerate under the forces actually applied
+        acceleration = np.linalg.solve(inertia, efforts + load)
+    return efforts, acceleration

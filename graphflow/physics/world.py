@@ -191,7 +191,8 @@ class PyBulletWorld:
         """Joint torques of every driven (or effort-commanded) articulation for this stage step."""
         return [(articulation, self._drive_efforts(articulation, self.time_step))
                 for articulation in self.scene.articulations.values()
-                if any(d is not None for d in articulation.drives) or any(articulation.efforts)]
+                if any(d is not None for d in articulation.drives) or any(articulation.efforts)
+                or any(math.isfinite(limit) for limits in self._joint_limits(articulation) for limit in limits)]
 
     def _apply_pre_step_forces(self, torques: list[tuple[ArticulationHandle, list[float]]]):
         client = self.client
@@ -232,7 +233,12 @@ class PyBulletWorld:
         return [tuple(entry) for entry in plan.values()]
 
     def _drive_efforts(self, articulation: ArticulationHandle, dt: float) -> list[float]:
-        """Joint efforts (PyBullet coordinates) of the drives and feed-forward efforts: ``drive_law``."""
+        """Joint efforts (PyBullet coordinates) of the drives and feed-forward efforts: ``drive_law``.
+
+        Also sets the joints' velocity motors: those of drives far stiffer than their links, and a
+        rigid motor that stops a joint on its limit where this step would carry it past (PyBullet's
+        own limits stop a joint only after it passed, and never push it back).
+        """
         states = self.client.getJointStates(articulation.body_id, articulation.joint_indices)
         signs = np.array(articulation.signs)
         positions = signs * [s[0] for s in states]
@@ -240,10 +246,35 @@ class PyBulletWorld:
         inertia = self._joint_inertia(articulation, [s[0] for s in states])
         if -1.0 in articulation.signs:   # signs flip rows and columns of M alike, so M in USD coordinates is S M S
             inertia = inertia * np.outer(signs, signs)
-        drives = self._drive_stiff_joints_by_motors(articulation, states, inertia, dt)
+        motors = [None if drive is None or not is_stiff(drive, inertia[dof, dof], dt) else
+                  motor_velocity(drive, inertia[dof, dof], positions[dof], signs[dof] * states[dof][3], dt)
+                  for dof, drive in enumerate(articulation.drives)]
+        torque_drives = [drive if motor is None else None for drive, motor in zip(articulation.drives, motors)]
         load = signs * self._joint_gravity(articulation, [s[0] for s in states])
-        efforts = drive_efforts(drives, articulation.efforts, positions, velocities, inertia, load, dt)
+        efforts, accelerations = drive_efforts(torque_drives, articulation.efforts, positions, velocities, inertia,
+                                               load, dt)
+        targets, forces = [], []
+        for dof, (lower, upper) in enumerate(self._joint_limits(articulation)):
+            motor = motors[dof]
+            velocity = motor if motor is not None else velocities[dof] + dt * accelerations[dof]
+            stopped = min(max(velocity, (lower - positions[dof]) / dt), (upper - positions[dof]) / dt)
+            if stopped != velocity:
+                targets.append(signs[dof] * stopped)
+                forces.append(MOTOR_MAX_FORCE)
+            elif motor is not None:
+                targets.append(signs[dof] * motor)
+                forces.append(min(articulation.drives[dof].max_force, MOTOR_MAX_FORCE))
+            else:
+                targets.append(0.0)
+                forces.append(0.0)
+        self.client.setJointMotorControlArray(articulation.body_id, articulation.joint_indices,
+                                              pybullet.VELOCITY_CONTROL, targetVelocities=targets, forces=forces)
         return (signs * efforts).tolist()
+
+    def _joint_limits(self, articulation: ArticulationHandle) -> list[tuple[float, float]]:
+        """(lower, upper) of each DOF in USD coordinates (infinite where the joint has none)."""
+        joints = self.description.joints
+        return [(joints[path].lower, joints[path].upper) for path in articulation.joint_paths]
 
     def _joint_gravity(self, articulation: ArticulationHandle, positions: list[float]) -> np.ndarray:
         """Generalised gravity force on the DOFs (PyBullet coordinates): sum of J^T m g over the links
@@ -263,26 +294,6 @@ class PyBulletWorld:
                                                              positions, zeros, zeros)
             load += weight @ np.array(linear)[:, offset:]
         return load
-
-    def _drive_stiff_joints_by_motors(self, articulation: ArticulationHandle, states, inertia, dt: float):
-        """Set velocity motors for drives far stiffer than their links (``drive_law``); return the
-        drives left to the torque law (None where a motor drives the joint)."""
-        signs = articulation.signs
-        remaining, velocities, forces = [], [], []
-        for dof, drive in enumerate(articulation.drives):
-            if drive is None or not is_stiff(drive, inertia[dof, dof], dt):
-                remaining.append(drive)
-                velocities.append(0.0)
-                forces.append(0.0)
-                continue
-            remaining.append(None)
-            last_force = signs[dof] * states[dof][3]
-            velocity = motor_velocity(drive, inertia[dof, dof], signs[dof] * states[dof][0], last_force, dt)
-            velocities.append(signs[dof] * velocity)
-            forces.append(min(drive.max_force, MOTOR_MAX_FORCE))
-        self.client.setJointMotorControlArray(articulation.body_id, articulation.joint_indices,
-                                              pybullet.VELOCITY_CONTROL, targetVelocities=velocities, forces=forces)
-        return remaining
 
     def _joint_inertia(self, articulation: ArticulationHandle, positions: list[float]) -> np.ndarray:
         """The joint-space inertia matrix of the articulation's DOFs (PyBullet coordinates).

@@ -14,9 +14,10 @@ STIFFNESS = (1e2, 1e3, 1e4, 1e5, 1e6)
 DAMPING = (0.0, 1e1, 1e2, 1e3, 1e4)
 
 
-def slide_stage(stiffness, damping, *, floating=False, start=0.0, kind="force", max_force=None):
+def slide_stage(stiffness, damping, *, floating=False, start=0.0, kind="force", max_force=None, limits=None):
     """A 2 kg load on a vertical prismatic drive (target 0) above a 20 kg base; the base is welded to
-    the world, or (*floating*) rests free on a box ground. The joint starts at *start* (m)."""
+    the world, or (*floating*) rests free on a box ground. The joint starts at *start* (m); no drive
+    when *stiffness* is None; *limits* (lower, upper) in m."""
     stage = Usd.Stage.CreateInMemory()
     UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)
     UsdGeom.SetStageMetersPerUnit(stage, 1.0)
@@ -44,6 +45,12 @@ def slide_stage(stiffness, damping, *, floating=False, start=0.0, kind="force", 
     slide.CreateBody1Rel().SetTargets(["/World/Robot/Load"])
     slide.CreateLocalPos0Attr(Gf.Vec3f(0, 0, 0.7))
     slide.CreateAxisAttr("Z")
+    if limits is not None:
+        slide.CreateLowerLimitAttr(limits[0])
+        slide.CreateUpperLimitAttr(limits[1])
+    slide.GetPrim().CreateAttribute("state:linear:physics:position", Sdf.ValueTypeNames.Float).Set(start)
+    if stiffness is None:
+        return stage
     drive = UsdPhysics.DriveAPI.Apply(slide.GetPrim(), "linear")
     drive.CreateTypeAttr(kind)
     drive.CreateStiffnessAttr(stiffness)
@@ -51,7 +58,6 @@ def slide_stage(stiffness, damping, *, floating=False, start=0.0, kind="force", 
     drive.CreateTargetPositionAttr(0.0)
     if max_force is not None:
         drive.CreateMaxForceAttr(max_force)
-    slide.GetPrim().CreateAttribute("state:linear:physics:position", Sdf.ValueTypeNames.Float).Set(start)
     return stage
 
 
