@@ -26,11 +26,10 @@ from __future__ import annotations
 
 import math
 import os
-import warnings
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from graphflow.usd.description import Body, Joint, Shape, StageDescription
-from graphflow.usd.errors import UnsupportedPrimWarning
+from graphflow.usd.errors import warn_unsupported
 from graphflow.usd.physics_import import joint_frame_offset
 from graphflow.usd.transforms import (AXIS_VECTORS, IDENTITY_POSE, Pose, compose, invert, quat_multiply,
                                       quat_from_axis_angle)
@@ -123,8 +122,8 @@ class SceneBuilder:
         articulated: set[str] = set()
         for articulation in self.description.articulations:
             if self._build_articulation(articulation):
-                articulated.update(articulation.bodies)
-                articulated.update(articulation.joints)
+                # what the multibody holds; bodies and joints it could not take are free bodies and constraints
+                articulated.update(self.scene.articulations[articulation.path].members)
         for path, body in self.description.bodies.items():
             if path not in articulated:
                 self._build_free_body(body)
@@ -139,7 +138,7 @@ class SceneBuilder:
             self._warned.add(path)
             if (path, reason) not in self.description.unsupported:
                 self.description.unsupported.append((path, reason))
-                warnings.warn(UnsupportedPrimWarning(f"{self.description.source}: {path}: {reason}"), stacklevel=3)
+                warn_unsupported(self.description.source, path, reason)
 
     # -- collision shapes ----------------------------------------------------------
     def _collision_shape(self, shapes: list[Shape], frame: Pose = IDENTITY_POSE) -> int:
@@ -245,8 +244,17 @@ class SceneBuilder:
                   if description.joints[path].enabled and description.joints[path].kind in ("fixed", "revolute",
                                                                                               "prismatic")]
         for path in articulation.joints:
-            if description.joints[path].kind not in ("fixed", "revolute", "prismatic"):
-                self._unsupported(path, f"a {description.joints[path].kind} joint inside an articulation")
+            joint = description.joints[path]
+            if joint.kind == "d6" and joint.enabled and (joint.body0 is None or joint.body1 is None):
+                # Isaac's robot assets (the Franka) anchor the root with a generic joint: PhysX fixes the base
+                self._unsupported(path, "a D6 joint from an articulation to the world: simulated as fixed "
+                                        "(its free axes are not simulated)")
+                joints.append(replace(joint, kind="fixed"))
+            elif joint.kind == "spherical":
+                self._unsupported(path, "a spherical joint inside an articulation: simulated as a point-to-point "
+                                        "constraint (no limits)")
+            elif joint.kind not in ("fixed", "revolute", "prismatic"):
+                self._unsupported(path, f"a {joint.kind} joint inside an articulation is not simulated")
         members = [b for b in articulation.bodies if b in description.bodies
                    and description.bodies[b].kind == "dynamic"]
         if not members:
@@ -264,7 +272,8 @@ class SceneBuilder:
             else:
                 fixed_base = True       # a massless anchor base carries the movable joint to the world
             for extra in world_joints[1:]:
-                self._unsupported(extra.path, "a second joint to the world in one articulation (closed loop)")
+                self._unsupported(extra.path, "a second joint to the world in one articulation (closed loop): "
+                                              "simulated as a constraint (no limits, no drive)")
                 joints.remove(extra)
         else:
             root_body = _floating_root(articulation, members, joints)
@@ -291,13 +300,15 @@ class SceneBuilder:
             remaining.remove(joint)
             child = joint.body1 if joint.body0 == parent else joint.body0
             if child in visited or child is None:
-                self._unsupported(joint.path, "a joint closing a loop in an articulation")
+                self._unsupported(joint.path, "a joint closing a loop in an articulation: simulated as a "
+                                              "constraint (no limits, no drive)")
                 continue
             visited.add(child)
             order.append((child, joint, parent, joint.body1 == child))
             stack.append(child)
         for joint in remaining:
-            self._unsupported(joint.path, "a joint not connected to its articulation's root")
+            self._unsupported(joint.path, "a joint not connected to its articulation's root: simulated as a "
+                                          "constraint between free bodies (no limits, no drive)")
 
         # frames: prim frame of each body expressed in its PyBullet link frame
         link_from_prim: dict[str | None, Pose] = {root_body: IDENTITY_POSE}
@@ -379,7 +390,8 @@ class SceneBuilder:
             joint_paths=tuple(j.path for _i, j, _s, _p, _c in dofs), joint_indices=tuple(i for i, *_ in dofs),
             signs=tuple(s for _i, _j, s, _p, _c in dofs), angular=tuple(j.kind == "revolute" for _i, j, *_ in dofs),
             drives=drives, efforts=efforts,
-            members=frozenset([articulation.path, *visited - {None}, *(j.path for _c, j, _p, _b in order)]))
+            members=frozenset([articulation.path, *visited - {None}, *(j.path for _c, j, _p, _b in order),
+                               *([anchor_joint.path] if anchor_joint is not None else [])]))
         self.scene.articulations[articulation.path] = handle
         for dof, path in enumerate(handle.joint_paths):
             self.scene.joint_dofs[path] = (articulation.path, dof)

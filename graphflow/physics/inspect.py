@@ -1,7 +1,7 @@
 """``graphflow stage STAGE.usda [--json] [--simulate SECONDS]``: what a stage holds, and whether it rests.
 
 The CLI calls ``run_stage_command``; it prints to stdout, reports a bad stage
-as one line on stderr and returns the exit code (0 ok, 2 bad input).
+as one line on stderr and returns the exit code (0 ok, 1 the simulation diverged, 2 bad input).
 """
 from __future__ import annotations
 
@@ -14,6 +14,7 @@ from graphflow.usd.description import StageDescription
 from graphflow.usd.errors import StageError, UnsupportedPrimWarning
 
 EXIT_OK = 0
+EXIT_RUNTIME = 1
 EXIT_BAD_INPUT = 2
 
 
@@ -130,15 +131,23 @@ def run_stage_command(stage_path: str, as_json: bool, simulate_seconds: float | 
         print(f"graphflow stage: --simulate needs a non-negative number of seconds, got {simulate_seconds}",
               file=sys.stderr)
         return EXIT_BAD_INPUT
+    from . import create_world
+    from .health import NonFiniteState
+
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", UnsupportedPrimWarning)   # listed in the report instead
             description = load_description(stage_path)
+            with create_world(stage_path) as world:      # building names what the PyBullet world cannot hold
+                description.unsupported[:] = world.description.unsupported
             report = stage_report(description)
             simulation = simulate_report(stage_path, simulate_seconds) if simulate_seconds is not None else None
     except StageError as error:
         print(f"graphflow stage: {error}", file=sys.stderr)
         return EXIT_BAD_INPUT
+    except NonFiniteState as error:
+        print(f"graphflow stage: {stage_path}: {error}", file=sys.stderr)
+        return EXIT_RUNTIME
     if as_json:
         if simulation is not None:
             report["simulation"] = simulation

@@ -19,6 +19,7 @@ from graphflow.world import Services, WorldError
 
 from .contacts import internal_substeps, solver_iterations
 from .drive_law import MOTOR_MAX_FORCE, drive_efforts, is_stiff, motor_velocity
+from .health import NonFiniteState, first_non_finite, health_plan
 from .native_output import native_stdout_silenced
 from .builder import ArticulationHandle, BodyHandle, BuiltScene, SceneBuilder
 
@@ -128,6 +129,7 @@ class PyBulletWorld:
         self._pending_forces: list[tuple[int, int, tuple, tuple | None]] = []
         self._offsets: dict[str, tuple[str | None, Pose]] = {}
         self._joint_gravity_plans: dict[str, list] = {}      # per articulation: (link, m g) of links with gravity
+        self._health_plan = health_plan(self.scene)
 
     @property
     def attachment_joints(self):
@@ -161,6 +163,10 @@ class PyBulletWorld:
             self._apply_pre_step_forces(torques)
             self.client.stepSimulation()
         self._pending_forces = []
+        broken = first_non_finite(self.client, self._health_plan)
+        if broken is not None:
+            raise NonFiniteState(f"{broken}: pose or velocity is not finite after physics step {self.step_index + 1} "
+                                 f"(t = {(self.step_index + 1) * self.time_step:.4g} s): the simulation diverged")
         self.step_index += 1
         self.time = self.step_index * self.time_step
         self.services.after_step(self.time_step)
@@ -440,11 +446,15 @@ class PyBulletWorld:
 
     def joint_positions(self, articulation_path: str) -> tuple[float, ...]:
         articulation = self._articulation(articulation_path)
+        if not articulation.joint_indices:
+            return ()
         states = self.client.getJointStates(articulation.body_id, articulation.joint_indices)
         return tuple(sign * s[0] for sign, s in zip(articulation.signs, states))
 
     def joint_velocities(self, articulation_path: str) -> tuple[float, ...]:
         articulation = self._articulation(articulation_path)
+        if not articulation.joint_indices:
+            return ()
         states = self.client.getJointStates(articulation.body_id, articulation.joint_indices)
         return tuple(sign * s[1] for sign, s in zip(articulation.signs, states))
 

@@ -11,8 +11,8 @@ mass properties (through ``RigidBodyAPI.ComputeMassProperties``), PhysX extras
 the joint state (``state:{angular,linear}:physics:{position,velocity}``, the
 PhysX JointStateAPI naming) and surface-gripper prims.
 
-Unsupported physics prims are reported once each with ``warnings.warn`` using
-``UnsupportedPrimWarning`` (and listed in ``StageDescription.unsupported``);
+Unsupported physics prims and authored PhysX joint settings that are not simulated are reported
+once each, one line, as ``UnsupportedPrimWarning`` (and listed in ``StageDescription.unsupported``);
 non-physics prims (lights, materials, OmniGraph prims) are skipped quietly.
 """
 from __future__ import annotations
@@ -24,7 +24,7 @@ from pathlib import Path
 
 from .description import (AxisLimit, Articulation, Body, Drive, Joint, MassProperties, Material, Shape,
                           StageDescription, SurfaceGripper)
-from .errors import StageError, UnsupportedPrimWarning
+from .errors import StageError, warn_unsupported
 from .transforms import AXIS_VECTORS, Pose, compose, quat_normalize, quat_rotate, relative, twist_angle
 
 DEFAULT_GRAVITY = 9.81                 # m/s^2, along minus the up axis
@@ -114,7 +114,7 @@ class _Importer:
 
     def _unsupported(self, path: str, reason: str):
         self.description.unsupported.append((path, reason))
-        warnings.warn(UnsupportedPrimWarning(f"{self.label}: {path}: {reason}"), stacklevel=4)
+        warn_unsupported(self.label, path, reason)
 
     def _vec(self, v, scale: float | None = None):
         factor = self.mpu if scale is None else scale
@@ -339,6 +339,10 @@ class _Importer:
 
         mass, diagonal, center, axes = UsdPhysics.RigidBodyAPI(prim).ComputeMassProperties(mass_information)
         mass = float(mass)
+        if not all(math.isfinite(float(c)) for c in center):
+            # MassAPI's "not authored" sentinel (-inf) comes back when no collider gave a centre of mass
+            # (the crab_hex plates, the Robotiq base mount): PhysX then uses the body origin
+            center = (0.0, 0.0, 0.0)
         diagonal = tuple(float(c) * self.mpu ** 2 for c in diagonal)
         principal_axes = _quat(axes)
         mass_api = UsdPhysics.MassAPI(prim)
@@ -422,6 +426,7 @@ class _Importer:
                       collision_enabled=bool(desc.collisionEnabled), enabled=bool(desc.jointEnabled),
                       exclude_from_articulation=bool(desc.excludeFromArticulation),
                       break_force=_finite_or_inf(desc.breakForce), break_torque=_finite_or_inf(desc.breakTorque))
+        self._unsimulated_joint_settings(prim, path)
         angular = kind == "revolute"
         if kind in ("revolute", "prismatic"):
             joint.axis = _enum_name(desc.axis)
@@ -453,6 +458,23 @@ class _Importer:
                 if drive is not None:
                     joint.drives[name] = drive
         self.description.joints[path] = joint
+
+    def _unsimulated_joint_settings(self, prim, path: str):
+        """Name the authored PhysX joint settings the PyBullet world does not simulate (non-zero values)."""
+        ignored = []
+        for attribute in prim.GetAuthoredAttributes():
+            name = attribute.GetName()
+            parts = name.split(":")
+            if name in ("physxJoint:armature", "physxJoint:jointFriction") or (
+                    parts[0] == "physxLimit" and parts[-1] in ("stiffness", "damping", "restitution",
+                                                               "bounceThreshold")):
+                value = attribute.Get()
+                if isinstance(value, (int, float)) and value != 0:
+                    ignored.append(name)
+        ignored += [relationship.GetName() for relationship in prim.GetAuthoredRelationships()
+                    if relationship.GetName().startswith("physxMimicJoint:")]       # a joint following another
+        if ignored:
+            self._unsupported(path, "PhysX joint settings not simulated: " + ", ".join(sorted(ignored)))
 
     def _articulations(self, articulations):
         if not articulations:

@@ -1,0 +1,49 @@
+"""A diverged simulation is an error, not a trace full of NaN: the first non-finite body, by tick.
+
+Links' poses follow from their multibody's base state and joint state, so checking those (one
+or two PyBullet calls per multibody) covers every body of the stage.
+"""
+from __future__ import annotations
+
+import math
+
+from graphflow.executor import GraphRuntimeError
+from graphflow.world import WorldError
+
+
+class NonFiniteState(GraphRuntimeError, WorldError):
+    """A body's pose or velocity became NaN or infinite (exit code 1 from ``graphflow run``)."""
+
+
+def health_plan(scene) -> list[tuple[int, str | None, tuple[int, ...], tuple[str, ...]]]:
+    """Per dynamic multibody: (body id, its base's prim or None, joint indices, the prims they move)."""
+    plan: dict[int, list] = {}
+    for path, handle in sorted(scene.bodies.items()):
+        if handle.kind != "dynamic":
+            continue
+        entry = plan.setdefault(handle.body_id, [handle.body_id, None, [], []])
+        if handle.link == -1:
+            entry[1] = path
+    for articulation in scene.articulations.values():
+        entry = plan.get(articulation.body_id)
+        if entry is not None:
+            entry[2] = articulation.joint_indices
+            entry[3] = tuple(scene.by_id.get((articulation.body_id, index), articulation.path)
+                             for index in articulation.joint_indices)
+    return [(body_id, base, tuple(joints), tuple(paths)) for body_id, base, joints, paths in plan.values()]
+
+
+def first_non_finite(client, plan) -> str | None:
+    """The first prim (in path order) whose pose or velocity is not finite, or None."""
+    broken = []
+    for body_id, base, joints, paths in plan:
+        position, orientation = client.getBasePositionAndOrientation(body_id)
+        linear, angular = client.getBaseVelocity(body_id)
+        if not all(math.isfinite(c) for c in (*position, *orientation, *linear, *angular)):
+            broken.append(base or paths[0])
+            continue
+        if joints:
+            for path, state in zip(paths, client.getJointStates(body_id, joints)):
+                if not (math.isfinite(state[0]) and math.isfinite(state[1])):
+                    broken.append(path)
+    return min(broken) if broken else None
