@@ -16,13 +16,15 @@ class NonFiniteState(GraphRuntimeError, WorldError):
 
 
 def health_plan(scene) -> list[tuple[int, str | None, tuple[int, ...], tuple[str, ...]]]:
-    """Per dynamic multibody: (body id, its base's prim or None, joint indices, the prims they move)."""
+    """Per dynamic multibody: (body id, its base's prim or None for a fixed base, joint indices, the prims
+    they move)."""
     plan: dict[int, list] = {}
     for path, handle in sorted(scene.bodies.items()):
         if handle.kind != "dynamic":
             continue
         entry = plan.setdefault(handle.body_id, [handle.body_id, None, [], []])
-        if handle.link == -1:
+        fixed = handle.articulation is not None and scene.articulations[handle.articulation].fixed_base
+        if handle.link == -1 and not fixed:         # a fixed base does not move
             entry[1] = path
     for articulation in scene.articulations.values():
         entry = plan.get(articulation.body_id)
@@ -37,11 +39,12 @@ def first_non_finite(client, plan) -> str | None:
     """The first prim (in path order) whose pose or velocity is not finite, or None."""
     broken = []
     for body_id, base, joints, paths in plan:
-        position, orientation = client.getBasePositionAndOrientation(body_id)
-        linear, angular = client.getBaseVelocity(body_id)
-        if not all(math.isfinite(c) for c in (*position, *orientation, *linear, *angular)):
-            broken.append(base or paths[0])
-            continue
+        if base is not None:
+            position, orientation = client.getBasePositionAndOrientation(body_id)
+            linear, angular = client.getBaseVelocity(body_id)
+            if not all(math.isfinite(c) for c in (*position, *orientation, *linear, *angular)):
+                broken.append(base)
+                continue
         if joints:
             for path, state in zip(paths, client.getJointStates(body_id, joints)):
                 if not (math.isfinite(state[0]) and math.isfinite(state[1])):

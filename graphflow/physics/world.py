@@ -130,6 +130,8 @@ class PyBulletWorld:
         self._offsets: dict[str, tuple[str | None, Pose]] = {}
         self._joint_gravity_plans: dict[str, list] = {}      # per articulation: (link, m g) of links with gravity
         self._health_plan = health_plan(self.scene)
+        self._limits: dict[str, list[tuple[float, float]]] = {}          # per articulation, by DOF
+        self._controlled_articulations: dict[str, bool] = {}
 
     @property
     def attachment_joints(self):
@@ -194,11 +196,21 @@ class PyBulletWorld:
 
     # -- per-step forces: drives, gravity switches, queued forces -----------------------------------
     def _drive_torques(self) -> list[tuple[ArticulationHandle, list[float]]]:
-        """Joint torques of every driven (or effort-commanded) articulation for this stage step."""
+        """Joint torques of every articulation with drives, efforts, limits or cancelled gravity, this stage step."""
         return [(articulation, self._drive_efforts(articulation, self.time_step))
                 for articulation in self.scene.articulations.values()
-                if any(d is not None for d in articulation.drives) or any(articulation.efforts)
-                or any(math.isfinite(limit) for limits in self._joint_limits(articulation) for limit in limits)]
+                if self._controlled(articulation) or any(articulation.efforts)]
+
+    def _controlled(self, articulation: ArticulationHandle) -> bool:
+        """Whether an articulation needs joint control every step (drives, limits, gravity cancelled by torques)."""
+        controlled = self._controlled_articulations.get(articulation.path)
+        if controlled is None:
+            controlled = self._controlled_articulations[articulation.path] = (
+                any(d is not None for d in articulation.drives)
+                or any(math.isfinite(limit) for limits in self._joint_limits(articulation) for limit in limits)
+                or any(self.scene.bodies[path].articulation == articulation.path
+                       and self._cancelled_by_joint_torques(self.scene.bodies[path]) for path in self._gravity_off))
+        return controlled
 
     def _apply_pre_step_forces(self, torques: list[tuple[ArticulationHandle, list[float]]]):
         client = self.client
@@ -229,6 +241,8 @@ class PyBulletWorld:
         plan: dict[int, list] = {}
         for path in sorted(self._gravity_off):
             handle = self.scene.bodies[path]
+            if self._cancelled_by_joint_torques(handle):
+                continue
             entry = plan.setdefault(handle.body_id, [handle.body_id, None, [], []])
             weight = [-handle.mass * g for g in gravity]
             if handle.link == -1:
@@ -245,20 +259,27 @@ class PyBulletWorld:
         rigid motor that stops a joint on its limit where this step would carry it past (PyBullet's
         own limits stop a joint only after it passed, and never push it back).
         """
-        states = self.client.getJointStates(articulation.body_id, articulation.joint_indices)
-        signs = np.array(articulation.signs)
-        positions = signs * [s[0] for s in states]
-        velocities = signs * [s[1] for s in states]
-        inertia = self._joint_inertia(articulation, [s[0] for s in states])
-        if -1.0 in articulation.signs:   # signs flip rows and columns of M alike, so M in USD coordinates is S M S
-            inertia = inertia * np.outer(signs, signs)
-        motors = [None if drive is None or not is_stiff(drive, inertia[dof, dof], dt) else
-                  motor_velocity(drive, inertia[dof, dof], positions[dof], signs[dof] * states[dof][3], dt)
-                  for dof, drive in enumerate(articulation.drives)]
-        torque_drives = [drive if motor is None else None for drive, motor in zip(articulation.drives, motors)]
-        load = signs * self._joint_gravity(articulation, [s[0] for s in states])
-        efforts, accelerations = drive_efforts(torque_drives, articulation.efforts, positions, velocities, inertia,
-                                               load, dt)
+        client = self.client
+        states = client.getJointStates(articulation.body_id, articulation.joint_indices)
+        signs = articulation.signs
+        positions = [sign * s[0] for sign, s in zip(signs, states)]
+        velocities = [sign * s[1] for sign, s in zip(signs, states)]
+        inertia = self._joint_inertia(articulation, [s[0] for s in states])     # diagonal unchanged by the signs
+        diagonal = inertia.diagonal().tolist()
+        drives = articulation.drives
+        motors = [None if drive is None or not is_stiff(drive, diagonal[dof], dt) else
+                  motor_velocity(drive, diagonal[dof], positions[dof], signs[dof] * states[dof][3], dt)
+                  for dof, drive in enumerate(drives)]
+        load, cancelling = self._joint_gravity(articulation, [s[0] for s in states])
+        if all(motor is not None for motor in motors):     # every DOF a motor (the UR10): no torque law to solve
+            efforts, accelerations = articulation.efforts, None
+        else:
+            if -1.0 in signs:   # signs flip rows and columns of M alike, so M in USD coordinates is S M S
+                inertia = inertia * np.outer(signs, signs)
+            torque_drives = [drive if motor is None else None for drive, motor in zip(drives, motors)]
+            efforts, accelerations = drive_efforts(torque_drives, articulation.efforts, positions, velocities,
+                                                   inertia, np.array(signs) * load, dt)
+            efforts, accelerations = efforts.tolist(), accelerations.tolist()
         targets, forces = [], []
         for dof, (lower, upper) in enumerate(self._joint_limits(articulation)):
             motor = motors[dof]
@@ -269,37 +290,57 @@ class PyBulletWorld:
                 forces.append(MOTOR_MAX_FORCE)
             elif motor is not None:
                 targets.append(signs[dof] * motor)
-                forces.append(min(articulation.drives[dof].max_force, MOTOR_MAX_FORCE))
+                forces.append(min(drives[dof].max_force, MOTOR_MAX_FORCE))
             else:
                 targets.append(0.0)
                 forces.append(0.0)
-        self.client.setJointMotorControlArray(articulation.body_id, articulation.joint_indices,
-                                              pybullet.VELOCITY_CONTROL, targetVelocities=targets, forces=forces)
-        return (signs * efforts).tolist()
+        client.setJointMotorControlArray(articulation.body_id, articulation.joint_indices,
+                                         pybullet.VELOCITY_CONTROL, targetVelocities=targets, forces=forces)
+        return [sign * effort + cancel for sign, effort, cancel in zip(signs, efforts, cancelling)]
 
     def _joint_limits(self, articulation: ArticulationHandle) -> list[tuple[float, float]]:
         """(lower, upper) of each DOF in USD coordinates (infinite where the joint has none)."""
-        joints = self.description.joints
-        return [(joints[path].lower, joints[path].upper) for path in articulation.joint_paths]
+        limits = self._limits.get(articulation.path)
+        if limits is None:
+            joints = self.description.joints
+            limits = self._limits[articulation.path] = [(joints[path].lower, joints[path].upper)
+                                                        for path in articulation.joint_paths]
+        return limits
 
-    def _joint_gravity(self, articulation: ArticulationHandle, positions: list[float]) -> np.ndarray:
-        """Generalised gravity force on the DOFs (PyBullet coordinates): sum of J^T m g over the links
-        whose gravity is on (the base's weight goes to whatever holds the base)."""
+    def _cancelled_by_joint_torques(self, handle: BodyHandle) -> bool:
+        """A gravity-free link of a fixed-base articulation: its weight is cancelled by joint torques
+        (the same generalised force, once per stage step) rather than by a force at its centre of mass
+        every substep."""
+        return handle.link >= 0 and handle.articulation is not None and \
+            self.scene.articulations[handle.articulation].fixed_base
+
+    def _joint_gravity(self, articulation: ArticulationHandle, positions: list[float]) -> tuple[np.ndarray, list]:
+        """(gravity load, gravity-cancelling torques) on the DOFs, PyBullet coordinates.
+
+        The load is sum of J^T m g over the links whose gravity is on (the base's weight goes to
+        whatever holds the base). On a fixed base, the links whose gravity is off get joint torques
+        that cancel their weight: from one inverse-dynamics call, G = -(sum over all links).
+        """
         plan = self._joint_gravity_plans.get(articulation.path)
         if plan is None:
             gravity = np.array(self.description.gravity)
-            plan = self._joint_gravity_plans[articulation.path] = [
-                (handle.link, handle.mass * gravity) for path, handle in sorted(self.scene.bodies.items())
-                if handle.articulation == articulation.path and handle.link >= 0 and handle.kind == "dynamic"
-                and path not in self._gravity_off]
-        load = np.zeros(len(positions))
+            links = [(path, handle.link, handle.mass * gravity) for path, handle in sorted(self.scene.bodies.items())
+                     if handle.articulation == articulation.path and handle.link >= 0 and handle.kind == "dynamic"]
+            plan = self._joint_gravity_plans[articulation.path] = (
+                [(link, weight) for path, link, weight in links if path not in self._gravity_off],
+                articulation.fixed_base and any(path in self._gravity_off for path, _link, _weight in links))
+        on, cancel_off = plan
         zeros = [0.0] * len(positions)
+        load = np.zeros(len(positions))
         offset = 0 if articulation.fixed_base else 6
-        for link, weight in plan:
+        for link, weight in on:
             linear, _angular = self.client.calculateJacobian(articulation.body_id, link, (0.0, 0.0, 0.0),
                                                              positions, zeros, zeros)
             load += weight @ np.array(linear)[:, offset:]
-        return load
+        if not cancel_off:
+            return load, zeros
+        holding_all = self.client.calculateInverseDynamics(articulation.body_id, positions, zeros, zeros)
+        return load, [hold + part for hold, part in zip(holding_all, load.tolist())]
 
     def _joint_inertia(self, articulation: ArticulationHandle, positions: list[float]) -> np.ndarray:
         """The joint-space inertia matrix of the articulation's DOFs (PyBullet coordinates).
@@ -340,6 +381,7 @@ class PyBulletWorld:
             self._gravity_off.add(handle.path)
         self._gravity_plan = None
         self._joint_gravity_plans = {}
+        self._controlled_articulations = {}
 
     # -- lookups ---------------------------------------------------------------------------------
     def _body(self, prim_path: str) -> BodyHandle:
@@ -641,6 +683,7 @@ class PyBulletWorld:
             handle.mass = mass
             self._gravity_plan = None
             self._joint_gravity_plans = {}
+            self._controlled_articulations = {}
             return
         vector = tuple(float(c) for c in value)
         if name in ("xformOp:translate", "xformOp:orient"):
