@@ -9,7 +9,9 @@ effector and one D6 attachment joint ``<ee>/d6FixedJoint``:
 * ``translate``/``direction``: the joint sits ``translate`` along the end
   effector's x, y or z; its frame keeps the end effector's orientation, so
   the ray always points along the end effector's +X (as the legacy C++).
-* ``grip_threshold``: the reach (``maxGripDistance``), from the joint origin.
+* ``grip_threshold``: the reach (``maxGripDistance``), from the joint origin, or where the joint
+  origin lies inside the end effector, from where the ray leaves it (the origin steps out 1 mm at
+  a time while the ray hits the end effector, as the legacy C++ did).
 * ``force_limit``/``torque_limit``: the joint's break force and torque
   (magnitudes on the attachment point); ``update()`` then opens the gripper.
 * ``kp``/``kd``: stiffness and damping of the joint's translations (the
@@ -96,6 +98,7 @@ class SurfaceGripper:
                                             coaxial_force_limit=-1.0, shear_force_limit=-1.0,
                                             retry_interval=math.inf)
         self.manager.set_break_limits(self.gripper_path, self.force_limit, self.torque_limit)
+        self.manager.set_reach_from_ray_origin(self.gripper_path, True)
         self.manager.set_gravity_disabled_while_held(self.gripper_path, self.disable_gravity)
         self._breaks_seen = self.manager.component(self.gripper_path).events.force_breaks
         if self._default_opened is None:

@@ -124,6 +124,11 @@ class SurfaceGripperManager:
         properties = self._require(path).properties
         properties.force_limit, properties.torque_limit = float(force_limit), float(torque_limit)
 
+    def set_reach_from_ray_origin(self, path: str, enabled: bool) -> None:
+        """Count maxGripDistance from where the ray leaves the gripper's own body, not from the joint
+        origin (the legacy gripper's grip_threshold)."""
+        self._require(path).properties.reach_from_ray_origin = bool(enabled)
+
     def set_gravity_disabled_while_held(self, path: str, disabled: bool) -> None:
         """Cancel gravity on objects while this gripper holds them (the legacy gripper's ``disable_gravity``)."""
         (self._gravity_off.add if disabled else self._gravity_off.discard)(path)

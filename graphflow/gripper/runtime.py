@@ -100,6 +100,7 @@ class GripperProperties:
     coaxial_force_limit: float = -1.0
     force_limit: float = -1.0      # legacy gripper: break when |F| exceeds it (not a USD property)
     torque_limit: float = -1.0     # legacy gripper: break when |T| exceeds it (not a USD property)
+    reach_from_ray_origin: bool = False   # legacy gripper: the reach counts from where the ray leaves the parent
 
 
 @dataclass
@@ -212,12 +213,17 @@ class SurfaceGripperComponent:
             self.points[index].settle = SETTLING_DELAY
 
     def _cast(self, point: AttachmentPoint, frame: Pose) -> str | None:
-        """Isaac's ray loop: from the clearance offset, stepping 1 mm past hits on the gripper's own body."""
+        """Isaac's ray loop: from the clearance offset, stepping 1 mm past hits on the gripper's own body.
+
+        The backend reports a body the ray starts inside at distance 0 (PhysX's scene query): an object
+        between the joint origin and the clearance point is gripped; a ray starting inside the
+        gripper's own body steps out of it 1 mm at a time.
+        """
         direction = point.frame_direction(frame)
         clearance = point.clearance_offset
         for _ in range(SELF_HIT_MAX_STEPS):
             origin = tuple(frame[0][i] + direction[i] * clearance for i in range(3))
-            length = self.properties.max_grip_distance - clearance
+            length = self.properties.max_grip_distance - (0.0 if self.properties.reach_from_ray_origin else clearance)
             hit = self.backend.raycast(origin, direction, length if length > 0 else 0.001)
             if hit is None:
                 return None

@@ -59,6 +59,7 @@ from graphflow.usd.transforms import AXIS_VECTORS, Pose, compose, invert, quat_r
 
 HOLD_MAX_FORCE = 1.0e7          # N (and N·m); far above any break limit so the reading is never clamped
 CONTACT_DAMPING_STEPS = 10      # while the object touches something, damping >= this * m / dt
+INSIDE_PROBE_RADIUS = 1.0e-4   # m: a ray starts inside a body when this sphere at its origin is 2 radii deep
 
 
 @dataclass
@@ -321,8 +322,31 @@ class WorldAttachmentBackend:
         return None if body is None else self.mechanism.joint_frame(body[0], body[1], self._joint_in_com(point))
 
     def raycast(self, origin, direction, length: float) -> str | None:
+        """The body hit first, PhysX-style: one the ray starts inside counts as hit at distance 0."""
+        inside = self._starts_inside(origin)
+        if inside is not None:
+            return inside
         hit = self.world.raycast(origin, direction, length)
         return hit.prim_path or None if hit is not None else None
+
+    def _starts_inside(self, origin) -> str | None:
+        """The body *origin* lies inside, if any (the deepest): PyBullet's rays report only surfaces
+        they enter, so a tiny probe sphere is tested against the bodies whose boxes hold the point."""
+        client = self.world.client
+        low = [c - INSIDE_PROBE_RADIUS for c in origin]
+        high = [c + INSIDE_PROBE_RADIUS for c in origin]
+        candidates = client.getOverlappingObjects(low, high) or ()
+        if not candidates:
+            return None
+        probe = client.createCollisionShape(pybullet.GEOM_SPHERE, radius=INSIDE_PROBE_RADIUS)
+        deepest, depth = None, -2.0 * INSIDE_PROBE_RADIUS       # the probe itself overlaps by its diameter
+        for body_id, link in candidates:
+            for point in client.getClosestPoints(bodyA=body_id, bodyB=-1, distance=0.0, linkIndexA=link,
+                                                 collisionShapeB=probe, collisionShapePositionB=list(origin)):
+                if point[8] < depth and self.world.prim_at(body_id, link):
+                    deepest, depth = self.world.prim_at(body_id, link), point[8]
+        client.removeCollisionShape(probe)
+        return deepest
 
     def attach(self, point, target_path: str):
         gripper, target = self._body(point.body0_path), self._body(target_path)

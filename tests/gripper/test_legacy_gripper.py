@@ -177,3 +177,22 @@ def test_default_state_post_reset_and_forward():
 def test_out_of_range_parameters_are_clear_errors(arguments, name):
     with pytest.raises(ValueError, match=name):
         SurfaceGripper(EE, **arguments)
+
+
+@pytest.mark.parametrize("threshold, grips", [(0.004, False), (0.02, True)])
+def test_a_suction_point_inside_the_end_effector_reaches_from_where_the_ray_leaves_it(threshold, grips):
+    """translate 0.10: the point lies 61 mm inside ee_link's collider (it ends 0.1611 m out). The ray steps
+    out 1 mm at a time while it hits ee_link and grip_threshold counts from there: the cube 5 mm past the
+    tip is reached with 20 mm, not with 4 mm (before: never, the reach ended inside ee_link)."""
+    world = _ur10_world(0.1, gap=0.005)
+    try:
+        gripper = SurfaceGripper(EE, translate=0.10, grip_threshold=threshold)
+        gripper.initialize(world)
+        _steps(world, gripper, 5)
+        gripper.close()
+        _steps(world, gripper, 5)
+        assert gripper.is_closed() is grips
+        assert gripper.gripped_objects() == ([CUBE] if grips else [])
+        assert world.prim_pose(CUBE)[0][2] == pytest.approx(TIP[2] - 0.005 - CUBE_SIZE / 2, abs=1e-3)   # not pulled
+    finally:
+        world.close()
