@@ -294,6 +294,7 @@ class WorldAttachmentBackend:
         self.mechanism = PyBulletAttachments(world.client)
         self._gravity_restore: dict[int, str] = {}
         self._joint_frames: dict[tuple, Pose] = {}     # (body0 path, joint pose in it) -> joint pose in the COM frame
+        self._probe: int | None = None                 # collision shape testing whether a ray starts inside a body
 
     def _body(self, path: str):
         try:
@@ -338,14 +339,15 @@ class WorldAttachmentBackend:
         candidates = client.getOverlappingObjects(low, high) or ()
         if not candidates:
             return None
-        probe = client.createCollisionShape(pybullet.GEOM_SPHERE, radius=INSIDE_PROBE_RADIUS)
+        if self._probe is None:     # kept until the world is rebuilt (PyBullet prints a note on removing shapes)
+            self._probe = client.createCollisionShape(pybullet.GEOM_SPHERE, radius=INSIDE_PROBE_RADIUS)
+        probe = self._probe
         deepest, depth = None, -2.0 * INSIDE_PROBE_RADIUS       # the probe itself overlaps by its diameter
         for body_id, link in candidates:
             for point in client.getClosestPoints(bodyA=body_id, bodyB=-1, distance=0.0, linkIndexA=link,
                                                  collisionShapeB=probe, collisionShapePositionB=list(origin)):
                 if point[8] < depth and self.world.prim_at(body_id, link):
                     deepest, depth = self.world.prim_at(body_id, link), point[8]
-        client.removeCollisionShape(probe)
         return deepest
 
     def attach(self, point, target_path: str):
@@ -381,6 +383,7 @@ class WorldAttachmentBackend:
         self.mechanism.clear()
         self._gravity_restore.clear()
         self._joint_frames.clear()
+        self._probe = None
 
 
 def _integrate(value: float, rate: float, load: float, inertia: float, dt: float, axis: AxisCompliance):
