@@ -65,9 +65,15 @@ that frame in the prim frame. Anything created through ``world.client`` is gone 
 Choices
 =======
 
-* Drives are a PD force computed each (sub)step and applied as joint torque
-  (``TORQUE_CONTROL``), integrated implicitly so stiff drives stay stable; see
-  ``PyBulletWorld._drive_efforts``. PyBullet's default joint motors are off.
+* Drives are PhysX's implicit PD drive computed once per stage step with the joints' gravity
+  load and feed-forward efforts (``drive_law``): joint torques, or for a drive far stiffer than
+  its link a velocity motor solved with the contacts. A joint that a step would carry past a
+  limit is stopped on it by a rigid motor. See docs/physics.md.
+* Contacts (``contacts``): PyBullet steps of at most 1/240 s (4 per 60 Hz stage step unless
+  ``substeps`` is given), a friction anchor on every dynamic body, a ``UsdGeom.Plane`` collider
+  as a large static box.
+* A non-finite body pose or velocity after a step raises ``health.NonFiniteState`` naming the
+  body and the step.
 * Initial joint positions: ``state:{angular,linear}:physics:position`` (PhysX
   JointStateAPI, degrees for angular) if authored, else taken from the bodies'
   authored poses. Link poses follow from the root pose by forward kinematics.

@@ -16,7 +16,12 @@ Mapping (documented in ``graphflow.physics``):
 * joints outside articulations become constraints (fixed, prismatic, point to
   point; revolute as two point-to-point constraints on the axis);
 * D6 joints with ``excludeFromArticulation`` are not built: they are the
-  surface gripper's attachment points, kept as descriptions;
+  surface gripper's attachment points, kept as descriptions; a D6 joint from
+  an articulation to the world fixes its base; bodies and joints an
+  articulation's tree cannot take (off the root, closing a loop) are free
+  bodies and constraints, each named once;
+* a ``UsdGeom.Plane`` collider is a large static box whose top face is the
+  plane, every dynamic body gets a friction anchor (``contacts``);
 * friction and restitution are given to PyBullet as square roots: Bullet
   multiplies the two bodies' coefficients where PhysX averages them, so equal
   materials combine to the authored value. Bullet has one friction
