@@ -117,3 +117,39 @@ def test_resting_cubes_and_a_pyramid_stay_put_for_60_s(ground):
                 assert angle_between_degrees(orientation, start[path][1]) < 0.5, path
             else:
                 assert moved < 1e-3, (path, moved)
+
+
+def test_substeps_follow_the_stage_rate_and_settings_override_them(tmp_path):
+    """At most 1/240 s per PyBullet step: 4 at 60 Hz, 2 at 120 Hz, 1 at 240 Hz; settings.substeps wins."""
+    import json
+
+    from graphflow.document import load_document
+    from graphflow.runtime import create_world_for
+
+    for rate, substeps in ((60, 4), (120, 2), (240, 1)):
+        with create_world(cube_stage("box", [], rate=rate)) as world:
+            assert (world.time_step, world.substeps) == (pytest.approx(1 / rate), substeps)
+    authored = cube_stage("box", [])          # kept alive while its layer is exported
+    authored.GetRootLayer().Export(str(tmp_path / "stage.usda"))
+    graph = tmp_path / "graph.json"
+    graph.write_text(json.dumps({"format": "graphflow", "formatVersion": [1, 0],
+                                 "settings": {"stage": "stage.usda", "substeps": 2}, "nodes": [], "connections": []}))
+    world = create_world_for(load_document(graph))
+    try:
+        assert world.substeps == 2
+    finally:
+        world.close()
+
+
+def test_authored_solver_iteration_counts_raise_or_clamp_pybullets_one_count():
+    stage = cube_stage("box", [("/World/Cube", 0.05, 1.0, (0.0, 0.0, 0.025))])
+    with create_world(stage) as world:
+        assert world.solver_iterations == 50
+    stage.GetPrimAtPath("/World/Cube").CreateAttribute("physxRigidBody:solverPositionIterationCount",
+                                                       Sdf_uint()).Set(64)
+    with create_world(stage) as world:
+        assert world.solver_iterations == 64
+    stage.GetPrimAtPath("/World/PhysicsScene").CreateAttribute("physxScene:maxPositionIterationCount",
+                                                               Sdf_uint()).Set(32)
+    with create_world(stage) as world:
+        assert world.solver_iterations == 32
