@@ -130,6 +130,9 @@ def test_the_ur10_holds_every_target_at_stiff_gains():
     from graphflow.physics import asset_path
 
     stage = Usd.Stage.Open(str(asset_path("ur10.usda")))
+    # edits go to this stage's session layer: the asset's own layer is shared by every stage that opens it
+    # in this process (editing it made a later test's UR10 1000x stiffer while this stage was alive)
+    stage.SetEditTarget(stage.GetSessionLayer())
     joints = [prim for prim in stage.Traverse() if prim.IsA(UsdPhysics.RevoluteJoint)]
     assert len(joints) == 6
     for prim in joints:
@@ -138,6 +141,7 @@ def test_the_ur10_holds_every_target_at_stiff_gains():
         drive.GetDampingAttr().Set(1e5 * math.pi / 180)
     targets = (0.3, -1.2, 1.0, -0.8, 0.6, 1.5)
     with create_world(stage) as world:
+        assert [d.stiffness for d in world.scene.articulations["/ur10"].drives] == pytest.approx([1e7] * 6)
         world.set_joint_targets("/ur10", range(6), positions=targets)
         for _ in range(180):
             world.step()

@@ -40,6 +40,7 @@ SAMPLE_FILES = ["isaacsim_SurfaceGripper_gantry.usda", "krabby_crab_simple.usda"
 def with_ground(path: Path):
     """The stage, plus a Plane ground under its lowest collider when it has no static collider."""
     stage = Usd.Stage.Open(str(path))
+    stage.SetEditTarget(stage.GetSessionLayer())   # the file's own layer is shared by every stage that opens it
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", UnsupportedPrimWarning)
         with create_world(stage) as world:
