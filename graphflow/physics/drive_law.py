@@ -42,18 +42,16 @@ def force_gains(drive, joint_inertia: float) -> tuple[float, float]:
     return drive.stiffness, drive.damping
 
 
-def is_stiff(drive, joint_inertia: float, dt: float) -> bool:
-    """Whether a drive is far stiffer than its link (D = dt d + dt^2 k > STIFF_RATIO M)."""
-    k, d = force_gains(drive, joint_inertia)
-    return dt * d + dt * dt * k > STIFF_RATIO * joint_inertia
-
-
 def motor_velocity(drive, target_position: float, target_velocity: float, joint_inertia: float, position: float,
-                   last_force: float, dt: float) -> float:
-    """The velocity a motor standing for a stiff drive aims at, given the force it needed last step."""
+                   last_force: float, dt: float) -> float | None:
+    """The velocity a motor standing for a stiff drive aims at, given the force it needed last step; None for a
+    drive that is not far stiffer than its link (D = dt d + dt^2 k <= STIFF_RATIO M: the torque law drives it)."""
     k, d = force_gains(drive, joint_inertia)
+    implicit = dt * k + d
+    if not dt * implicit > STIFF_RATIO * joint_inertia:
+        return None
     error = min(max(target_position, drive.lower), drive.upper) - position
-    velocity = (k * error + d * target_velocity - last_force) / (dt * k + d)
+    velocity = (k * error + d * target_velocity - last_force) / implicit
     if drive.max_velocity is not None:
         velocity = max(-drive.max_velocity, min(drive.max_velocity, velocity))
     return velocity

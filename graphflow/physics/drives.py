@@ -16,7 +16,7 @@ import pybullet
 from graphflow.usd.description import StageDescription
 
 from .builder import ArticulationHandle, BodyHandle
-from .drive_law import MOTOR_MAX_FORCE, drive_efforts, is_stiff, motor_velocity
+from .drive_law import MOTOR_MAX_FORCE, drive_efforts, motor_velocity
 
 @dataclass
 class DriveTargets:
@@ -78,17 +78,19 @@ class JointControl:
         signs = articulation.signs
         positions = [sign * s[0] for sign, s in zip(signs, states)]
         velocities = [sign * s[1] for sign, s in zip(signs, states)]
-        inertia = joint_inertia(client, articulation, [s[0] for s in states])   # diagonal unchanged by the signs
-        diagonal = inertia.diagonal().tolist()
+        raw_positions = [s[0] for s in states]
+        inertia = joint_inertia(client, articulation, raw_positions)    # diagonal unchanged by the signs
+        diagonal = [float(inertia[dof][dof]) for dof in range(len(states))]
         drives = articulation.drives
-        motors = [None if drive is None or not is_stiff(drive, diagonal[dof], dt) else
+        motors = [None if drive is None else
                   motor_velocity(drive, targets.positions[dof], targets.velocities[dof], diagonal[dof],
                                  positions[dof], signs[dof] * states[dof][3], dt)
                   for dof, drive in enumerate(drives)]
-        load, cancelling = self._joint_gravity(articulation, [s[0] for s in states])
+        load, cancelling = self._joint_gravity(articulation, raw_positions)
         if all(motor is not None for motor in motors):     # every DOF a motor (the UR10): no torque law to solve
             efforts, accelerations = targets.efforts, None
         else:
+            inertia = np.asarray(inertia)
             if -1.0 in signs:   # signs flip rows and columns of M alike, so M in USD coordinates is S M S
                 inertia = inertia * np.outer(signs, signs)
             torque_drives = [drive if motor is None else None for drive, motor in zip(drives, motors)]
@@ -147,16 +149,18 @@ class JointControl:
         return load, [hold + part for hold, part in zip(holding_all, load.tolist())]
 
 
-def joint_inertia(client, articulation: ArticulationHandle, positions: list[float]) -> np.ndarray:
-    """The joint-space inertia matrix of the articulation's DOFs (PyBullet coordinates).
+def joint_inertia(client, articulation: ArticulationHandle, positions: list[float]):
+    """The joint-space inertia matrix of the articulation's DOFs (PyBullet coordinates): PyBullet's rows as
+    they come for a fixed base (most steps need only the diagonal), a numpy array for a floating base.
 
     For a floating base, the inertia the joints feel with the base free (the Schur complement):
     the smallest the joints can feel (contacts only add to it), which keeps the drive's load
     estimate from over-correcting (``drive_law``).
     """
-    matrix = np.array(client.calculateMassMatrix(articulation.body_id, positions))
+    rows = client.calculateMassMatrix(articulation.body_id, positions)
     if articulation.fixed_base:
-        return matrix
+        return rows
+    matrix = np.array(rows)
     base, joints = matrix[:6, :6], matrix[6:, 6:]
     coupling = matrix[6:, :6]
     return joints - coupling @ np.linalg.solve(base, coupling.T)
@@ -211,6 +215,8 @@ class GravitySwitches:
         """Per PyBullet body: (id, its base's weight or None, links, their weights) of the bodies switched off."""
         plan: dict[int, list] = {}
         for path in sorted(self.off - self.by_joint_torques):
+            if not self.masses[path]:       # a massless body (a fixed base) weighs nothing to cancel
+                continue
             handle = self.bodies[path]
             entry = plan.setdefault(handle.body_id, [handle.body_id, None, [], []])
             weight = [-self.masses[path] * g for g in self.gravity]

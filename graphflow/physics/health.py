@@ -36,17 +36,26 @@ def health_plan(scene) -> list[tuple[int, str | None, tuple[int, ...], tuple[str
 
 
 def first_non_finite(client, plan) -> str | None:
-    """The first prim (in path order) whose pose or velocity is not finite, or None."""
+    """The first prim (in path order) whose pose or velocity is not finite, or None.
+
+    A sum of floats is finite when every term is (NaN and infinities propagate), so one sum per
+    multibody clears the common case; only a non-finite sum looks at the values one by one.
+    """
     broken = []
+    isfinite = math.isfinite
     for body_id, base, joints, paths in plan:
         if base is not None:
             position, orientation = client.getBasePositionAndOrientation(body_id)
             linear, angular = client.getBaseVelocity(body_id)
-            if not all(math.isfinite(c) for c in (*position, *orientation, *linear, *angular)):
+            if not isfinite(sum(position) + sum(orientation) + sum(linear) + sum(angular)) and not all(
+                    isfinite(c) for c in (*position, *orientation, *linear, *angular)):
                 broken.append(base)
                 continue
         if joints:
-            for path, state in zip(paths, client.getJointStates(body_id, joints)):
-                if not (math.isfinite(state[0]) and math.isfinite(state[1])):
+            states = client.getJointStates(body_id, joints)
+            if isfinite(sum([state[0] + state[1] for state in states])):
+                continue
+            for path, state in zip(paths, states):
+                if not (isfinite(state[0]) and isfinite(state[1])):
                     broken.append(path)
     return min(broken) if broken else None
