@@ -49,6 +49,14 @@ def quat_rotate(q: Quat, v: Vec3) -> Vec3:
             vz + w * tz + (x * ty - y * tx))
 
 
+def quat_matrix(q: Quat) -> tuple[float, ...]:
+    """The rotation matrix of a unit quaternion, row-major 9-tuple: column i is the rotated axis i."""
+    x, y, z, w = q
+    return (1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - z * w), 2.0 * (x * z + y * w),
+            2.0 * (x * y + z * w), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - x * w),
+            2.0 * (x * z - y * w), 2.0 * (y * z + x * w), 1.0 - 2.0 * (x * x + y * y))
+
+
 def quat_from_axis_angle(axis: Vec3, angle: float) -> Quat:
     half = 0.5 * angle
     s = math.sin(half)

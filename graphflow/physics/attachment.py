@@ -57,7 +57,7 @@ import pybullet
 
 from graphflow.world import RIGID, AxisCompliance
 
-from graphflow.poses import AXIS_VECTORS, Pose, compose, invert, quat_rotate, relative
+from graphflow.poses import AXIS_VECTORS, Pose, compose, invert, quat_matrix, quat_rotate, relative
 
 HOLD_MAX_FORCE = 1.0e7          # N (and N·m); far above any break limit so the reading is never clamped
 CONTACT_DAMPING_STEPS = 10      # while the object touches something, damping >= this * m / dt
@@ -77,6 +77,7 @@ class _Hold:
     offset: list[float] = field(default_factory=lambda: [0.0] * 6)
     rate: list[float] = field(default_factory=lambda: [0.0] * 6)
     previous: tuple | None = None  # last step's (object v, object w, rigid-follow v, gripper w)
+    child: Pose | None = None      # the child frame the constraint enforces now (``child_at_attach`` displaced)
     axes: tuple[AxisCompliance, ...] = ()   # limits of the first point, summed drives of all
 
     @property
@@ -251,7 +252,7 @@ class PyBulletAttachments:
         relative_angular = _scale(_sub(_sub(w_object, previous[1]), _sub(w_gripper, previous[3])), 1.0 / dt)
 
         # the joint frame in world, at the displaced pose the constraint enforces
-        child = self._displaced_child(hold)
+        child = hold.child or hold.child_at_attach
         frame = compose(target_com, child)
         state = self.bullet.getConstraintState(hold.constraint)
         force_on_object = (-state[0], -state[1], -state[2])
@@ -263,18 +264,27 @@ class PyBulletAttachments:
         angular_inertia = _world_inertia(target_com[1], inertia_diagonal, relative_angular)
         load_torque = _sub(_add(angular_inertia, _cross(com_lever, inertial_force)), torque_on_object)
 
-        axes = [quat_rotate(frame[1], AXIS_VECTORS[a]) for a in ("X", "Y", "Z")]
+        rows = quat_matrix(frame[1])
+        axes = [(rows[0], rows[3], rows[6]), (rows[1], rows[4], rows[7]), (rows[2], rows[5], rows[8])]
         loads = [_dot(load_force, axis) for axis in axes] + [_dot(load_torque, axis) for axis in axes]
-        inertias = [mass] * 3 + [_dot(axis, _world_inertia(target_com[1], inertia_diagonal, axis))
-                                 + mass * _dot(_cross(axis, com_lever), _cross(axis, com_lever)) for axis in axes]
+        # about each joint axis through the pivot: the axis in the object's principal frame is the child
+        # frame's column, so the object's own part is sum_j I_j c_j^2 (parallel axis theorem for the rest)
+        in_body = quat_matrix(child[1])
+        ix, iy, iz = inertia_diagonal
+        inertias = [mass] * 3 + [ix * in_body[i] * in_body[i] + iy * in_body[3 + i] * in_body[3 + i]
+                                 + iz * in_body[6 + i] * in_body[6 + i]
+                                 + mass * _dot(_cross(axis, com_lever), _cross(axis, com_lever))
+                                 for i, axis in enumerate(axes)]
         for index, axis in enumerate(hold.axes):
             if touching:   # contact forces are stiff springs fed back explicitly: damp the joint enough to creep
                 axis = replace(axis, damping=max(axis.damping, CONTACT_DAMPING_STEPS * inertias[index] / dt))
             hold.offset[index], hold.rate[index] = _integrate(
                 hold.offset[index], hold.rate[index], loads[index], inertias[index], dt, axis)
-        child = self._displaced_child(hold)
-        self.bullet.changeConstraint(hold.constraint, jointChildPivot=child[0],
-                                     jointChildFrameOrientation=child[1], maxForce=HOLD_MAX_FORCE)
+        moved = self._displaced_child(hold)
+        if moved != child:
+            hold.child = moved
+            self.bullet.changeConstraint(hold.constraint, jointChildPivot=moved[0],
+                                         jointChildFrameOrientation=moved[1], maxForce=HOLD_MAX_FORCE)
 
     @staticmethod
     def _displaced_child(hold: _Hold) -> Pose:

@@ -25,7 +25,7 @@ from graphflow.world import DEFAULT_TIME_STEP, Contact, RayHit, Services, WorldE
 from . import attributes
 from .attachment import WorldAttachments
 from .builder import BuiltScene, SceneBuilder
-from .contacts import internal_substeps, solver_iterations
+from .contacts import SOLVER_RESIDUAL, internal_substeps, solver_iterations
 from .drives import DriveTargets, GravitySwitches, JointControl
 from .health import NonFiniteState, first_non_finite, health_plan
 from .lookups import SceneLookups
@@ -97,7 +97,8 @@ class PyBulletWorld(SceneLookups):
         client = self.client
         client.resetSimulation()
         client.setPhysicsEngineParameter(fixedTimeStep=self.time_step / self.substeps, numSubSteps=0,
-                                         numSolverIterations=self.solver_iterations, deterministicOverlappingPairs=1)
+                                         numSolverIterations=self.solver_iterations, deterministicOverlappingPairs=1,
+                                         solverResidualThreshold=SOLVER_RESIDUAL)
         client.setGravity(*self.description.gravity)
         self.scene: BuiltScene = SceneBuilder(client, self.description, self._mesh_directory).build()
         for path, reason in self.scene.unsupported:
