@@ -156,8 +156,7 @@ class SerialChain:
                 break
             # (J^T J + lambda^2 I) step = J^T e: the same step as J^T (J J^T + lambda^2 I)^-1 e
             columns = _jacobian_columns(tool, origins, axes)
-            normal = [[_dot6(a, b) for b in columns[:i]] + [_dot6(a, a) + damping] for i, a in enumerate(columns)]
-            step = _solve_positive_definite(normal, [_dot6(column, error) for column in columns])
+            step = _damped_least_squares_step(columns, error, damping)
             largest = max(abs(s) for s in step)
             scale = MAX_JOINT_STEP / largest if largest > MAX_JOINT_STEP else 1.0
             q = [min(max(v + scale * s, low), high) for v, s, low, high in zip(q, step, lower, upper)]
@@ -261,31 +260,34 @@ def _jacobian_columns(tool, origins, axes) -> list[tuple[float, ...]]:
     return columns
 
 
-def _dot6(a, b) -> float:
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[4] * b[4] + a[5] * b[5]
-
-
-def _solve_positive_definite(matrix, rhs) -> list[float]:
-    """x with matrix @ x = rhs, by Cholesky (the damped normal matrix is symmetric positive definite).
-
-    Only the lower triangle of *matrix* is read (row i may stop at column i).
-    """
-    n = len(rhs)
-    lower = [[0.0] * n for _ in range(n)]
-    for i in range(n):
-        row = lower[i]
-        for j in range(i + 1):
-            other = lower[j]
-            total = matrix[i][j]
+def _damped_least_squares_step(columns, error, damping: float) -> list[float]:
+    """x with (J^T J + damping I) x = J^T e, J's columns given: Cholesky of the normal matrix, built row by row
+    as it is factored (the damped normal matrix is symmetric positive definite). Plain floats: numpy's
+    per-call overhead exceeds the arithmetic of a 6 x 6 solve."""
+    lower = []
+    for i, a in enumerate(columns):
+        a0, a1, a2, a3, a4, a5 = a
+        row = []
+        for j in range(i):
+            b, other = columns[j], lower[j]
+            total = a0 * b[0] + a1 * b[1] + a2 * b[2] + a3 * b[3] + a4 * b[4] + a5 * b[5]
             for k in range(j):
                 total -= row[k] * other[k]
-            row[j] = math.sqrt(total) if i == j else total / other[j]
-    y = [0.0] * n
-    for i in range(n):
-        total = rhs[i]
+            row.append(total / other[j])
+        total = a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3 + a4 * a4 + a5 * a5 + damping
         for k in range(i):
-            total -= lower[i][k] * y[k]
-        y[i] = total / lower[i][i]
+            total -= row[k] * row[k]
+        row.append(math.sqrt(total))
+        lower.append(row)
+    e0, e1, e2, e3, e4, e5 = error
+    y = []
+    for i, (a0, a1, a2, a3, a4, a5) in enumerate(columns):
+        total = a0 * e0 + a1 * e1 + a2 * e2 + a3 * e3 + a4 * e4 + a5 * e5
+        row = lower[i]
+        for k in range(i):
+            total -= row[k] * y[k]
+        y.append(total / row[i])
+    n = len(columns)
     x = [0.0] * n
     for i in reversed(range(n)):
         total = y[i]
