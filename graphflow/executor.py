@@ -335,6 +335,7 @@ class GraphInstance:
         """Bind the compiled tables to this instance's value dicts (which reset() refills in place)."""
         compiled, databases = self.compiled, self._databases
         self._computes = tuple(node.node_type.compute for node in compiled.nodes)
+        self._idles = tuple(node.node_type.idle for node in compiled.nodes)
         self._input_dicts = tuple(database.inputs.__dict__ for database in databases)
         self._output_dicts = tuple(database.outputs.__dict__ for database in databases)
         # pulls[i]: (inputs dict of i, input name, outputs dict of the source, source output name)
@@ -435,7 +436,7 @@ class GraphInstance:
         pop = stack.pop
         if push is None:
             push = stack.append
-        computes, databases = self._computes, self._databases
+        computes, idles, databases = self._computes, self._idles, self._databases
         input_dicts, output_dicts, pulls = self._input_dicts, self._output_dicts, self._pulls
         pull_programs = self._pull_programs
         exec_input_names, exec_output_names = compiled.exec_input_names, compiled.exec_output_names
@@ -450,17 +451,20 @@ class GraphInstance:
                 count += 1
                 if count > budget:
                     raise self._budget_error()
-                # pull: stale pure upstream nodes compute, then this node's data inputs are copied in
-                pull = pull_programs[index]
-                if pull is not None:
-                    pull(self._tick_epoch, self._exec_epoch)
-                for inputs, name, source, source_name in pulls[index]:
-                    inputs[name] = source[source_name]
                 inputs, outputs = input_dicts[index], output_dicts[index]
                 for name in exec_input_names[index]:
                     inputs[name] = _ENABLED if name in pins else _DISABLED
                 for name in exec_output_names[index]:
                     outputs[name] = _DISABLED
+                idle = idles[index]
+                if idle is not None and idle(databases[index]):
+                    continue                    # the pulse would change nothing: no pulls, no compute
+                # pull: stale pure upstream nodes compute, then this node's data inputs are copied in
+                pull = pull_programs[index]
+                if pull is not None:
+                    pull(self._tick_epoch, self._exec_epoch)
+                for data_inputs, name, source, source_name in pulls[index]:
+                    data_inputs[name] = source[source_name]
                 self._exec_epoch = epoch = self._exec_epoch + 1
                 last_exec_compute[index] = epoch
                 compute_counts[index] += 1

@@ -45,6 +45,7 @@ class Registry:
         self.register(NodeType(spec=spec, compute=compute,
                                initialize=getattr(module, "initialize", None),
                                validate=getattr(module, "validate", None),
+                               idle=getattr(module, "idle", None),
                                module=module.__name__))
         return True
 

@@ -169,4 +169,7 @@ class NodeType:
     compute: Callable[[Any], Any]
     initialize: Callable[[Any], None] | None = None
     validate: Callable[[str, dict], list] | None = None
+    # idle(db): True when this pulse would change nothing (no output, no state); the executor then skips the
+    # node's pulls and compute. It may read exec inputs, state and internals, never data inputs (not pulled yet).
+    idle: Callable[[Any], bool] | None = None
     module: str = ""

@@ -229,6 +229,19 @@ def run_controller(db, make_routine):
     return reported
 
 
+def controller_idle(db) -> bool:
+    """The controllers' ``idle``: no reset, pause or resume pulse, and the routine either advanced already this
+    tick (the latent continuation after the tick's pulse) or is finished. Such a pulse changes no output, so
+    the executor skips it: a finished controller pulsed every tick costs a dispatch, not its pulls and compute."""
+    routine = db.internal.get("routine")
+    if routine is None:
+        return False
+    inputs = db.inputs
+    if inputs.reset == ExecState.ENABLED or inputs.pause == ExecState.ENABLED or inputs.resume == ExecState.ENABLED:
+        return False
+    return db.frame == db.state.lastFrame or (routine.done and not db.state.running)
+
+
 def _advance(db, routine):
     db.outputs.execOut = ExecState.ENABLED
     if routine.marker != db.internal["reported"]:

@@ -9,7 +9,8 @@ phase machine, so pulsing execIn every tick does not double the speed.
 from graphflow.spec import Attribute, NodeSpec
 
 from ._pick_place import (COMMON_INPUTS, COMMON_OUTPUTS, COMMON_STATE, MOTION_INPUTS, events_dt_problems, new_run,
-                          run_controller)
+                          run_controller,
+                          controller_idle)
 
 SPEC = NodeSpec(
     id="graphflow.PickPlaceController",
@@ -61,6 +62,10 @@ class _PickPlace:
 
     def step(self, db):
         return self.run.step(db.inputs.pickingPosition, db.inputs.placingPosition, db.inputs.endEffectorOffset)
+
+
+# a finished routine, or the latent continuation after this tick's advance: the pulse changes nothing
+idle = controller_idle
 
 
 def compute(db):

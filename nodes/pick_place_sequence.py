@@ -15,7 +15,8 @@ from graphflow.spec import Attribute, NodeSpec
 from graphflow.poses import quat_from_axis_angle, quat_multiply
 
 from ._pick_place import (CLOSE_EVENT, COMMON_INPUTS, COMMON_OUTPUTS, COMMON_STATE, DONE, MOTION_INPUTS, mix,
-                          events_dt_problems, new_run, run_controller)
+                          events_dt_problems, new_run, run_controller,
+                          controller_idle)
 
 MOVE_TO_PLACE = 5
 
@@ -106,6 +107,10 @@ class _Sequence:
             self.index += 1
             self.run = new_run(db)
         return action
+
+
+# a finished routine, or the latent continuation after this tick's advance: the pulse changes nothing
+idle = controller_idle
 
 
 def compute(db):

@@ -8,7 +8,8 @@ done the next starts in the same tick.
 from graphflow.spec import Attribute, NodeSpec
 
 from ._pick_place import (COMMON_INPUTS, COMMON_OUTPUTS, COMMON_STATE, DONE, MOTION_INPUTS, events_dt_problems,
-                          new_run, run_controller)
+                          new_run, run_controller,
+                          controller_idle)
 
 SPEC = NodeSpec(
     id="graphflow.StackingController",
@@ -67,6 +68,10 @@ class _Stacking:
             self.index += 1
             self.run = new_run(db)
         return action
+
+
+# a finished routine, or the latent continuation after this tick's advance: the pulse changes nothing
+idle = controller_idle
 
 
 def compute(db):

@@ -190,3 +190,29 @@ def test_events_dt_is_checked_at_load_time(values, fragment):
 def test_legacy_id_loads():
     assert NodeHarness("omni.isaac.examples_nodes.IsaacPickPlaceController").database.spec.id == \
         "graphflow.PickPlaceController"
+
+
+def test_a_controller_computes_once_a_tick_and_a_finished_one_pulls_nothing():
+    """The latent continuation after the tick's advance and the pulses after the routine is done change no
+    output, so the executor skips them (the controllers' ``idle``): no compute, no pull of its inputs."""
+    world = FakeUR10World()
+    graph = GraphHarness({
+        "nodes": [
+            {"name": "tick", "type": "omni.graph.action.OnTick"},
+            {"name": "pick_at", "type": "omni.graph.nodes.MakeVector3",
+             "inputs": {"x": PICK[0], "y": PICK[1], "z": PICK[2]}},
+            {"name": "pick_place", "type": "graphflow.PickPlaceController",
+             "inputs": {"robotPrim": ROBOT, "gripperPrim": GRIPPER, "placingPosition": list(PLACE),
+                        "eventsDT": [0.5] * 10}},
+        ],
+        "connections": [{"src": "tick.outputs:tick", "dst": "pick_place.inputs:execIn"},
+                        {"src": "pick_at.outputs:tuple", "dst": "pick_place.inputs:pickingPosition"}],
+    }, world=world)
+    graph.run(ticks=5)
+    assert graph.compute_counts["pick_place"] == 5 and graph.output("pick_place", "event") == 2
+    graph.run(ticks=30)
+    assert graph.output("pick_place", "isDone") and graph.output("pick_place", "eventName") == "done"
+    finished = graph.compute_counts
+    graph.run(ticks=100)
+    assert graph.compute_counts == {**finished, "tick": finished["tick"] + 100}
+    assert graph.output("pick_place", "event") == 10
