@@ -8,7 +8,7 @@ forces); PyBullet's IK (``calculateInverseKinematics``) for the suction tip;
 suction as a ``JOINT_FIXED`` constraint made when a 10 mm ray from the tip hits
 the cube. The same ten phases with Isaac's phase increments and cosine blends,
 the same number of ticks, PyBullet stepped at the same internal rate graphflow
-uses (its time step, substeps and solver iterations are read off the graphflow
+uses (its time step, substeps, solver iterations and residual are read off the graphflow
 world and passed in). The two runs must put the cube within 5 mm of each other
 (checked), so the baseline is doing the same job, not a cheaper one.
 
@@ -104,12 +104,13 @@ def _mix(t: float) -> float:
 class PlainPickPlace:
     """The pick and place with raw PyBullet calls only, one ``step()`` per graph tick."""
 
-    def __init__(self, time_step: float, substeps: int, solver_iterations: int):
+    def __init__(self, time_step: float, substeps: int, solver_iterations: int, solver_residual: float):
         import pybullet
         from pybullet_utils.bullet_client import BulletClient
 
         self.p = pybullet
         self.time_step, self.substeps, self.solver_iterations = time_step, substeps, solver_iterations
+        self.solver_residual = solver_residual
         self.client = BulletClient(pybullet.DIRECT)
         handle, self._urdf = tempfile.mkstemp(suffix=".urdf", prefix="plain-ur10-")
         with os.fdopen(handle, "w") as urdf:
@@ -120,7 +121,8 @@ class PlainPickPlace:
         p, client = self.p, self.client
         client.resetSimulation()
         client.setPhysicsEngineParameter(fixedTimeStep=self.time_step / self.substeps, numSubSteps=0,
-                                         numSolverIterations=self.solver_iterations, deterministicOverlappingPairs=1)
+                                         numSolverIterations=self.solver_iterations, deterministicOverlappingPairs=1,
+                                         solverResidualThreshold=self.solver_residual)
         client.setGravity(0, 0, -9.81)
         ground = client.createCollisionShape(p.GEOM_BOX, halfExtents=[25, 25, 0.5])
         client.createMultiBody(0, ground, -1, [0, 0, -0.5])
@@ -204,7 +206,7 @@ def run(quick: bool = False) -> str:
     sim = simulation(PICK_PLACE)
     world = sim.world
     with quiet():
-        plain = PlainPickPlace(world.time_step, world.substeps, world.solver_iterations)
+        plain = PlainPickPlace(world.time_step, world.substeps, world.solver_iterations, world.solver_residual)
     limit, repetitions, chunk = (30, 1, 10) if quick else (None, 3, 25)
     try:
         ticks = sim.run(ticks=limit).ticks               # the graph stops itself when the routine is done

@@ -73,6 +73,7 @@ class PyBulletWorld(SceneLookups):
         self.time_step = float(chosen)
         self.substeps = int(substeps)
         self.solver_iterations = solver_iterations(description.solver_iterations, SOLVER_ITERATIONS)
+        self.solver_residual = SOLVER_RESIDUAL
         self.time = 0.0
         self.step_index = 0
         self.playing = True
@@ -98,7 +99,7 @@ class PyBulletWorld(SceneLookups):
         client.resetSimulation()
         client.setPhysicsEngineParameter(fixedTimeStep=self.time_step / self.substeps, numSubSteps=0,
                                          numSolverIterations=self.solver_iterations, deterministicOverlappingPairs=1,
-                                         solverResidualThreshold=SOLVER_RESIDUAL)
+                                         solverResidualThreshold=self.solver_residual)
         client.setGravity(*self.description.gravity)
         self.scene: BuiltScene = SceneBuilder(client, self.description, self._mesh_directory).build()
         for path, reason in self.scene.unsupported:
