@@ -75,17 +75,18 @@ class JointControl:
     def _efforts(self, articulation: ArticulationHandle, targets: DriveTargets, dt: float) -> list[float]:
         client = self.client
         states = client.getJointStates(articulation.body_id, articulation.joint_indices)
-        signs = articulation.signs
-        positions = [sign * s[0] for sign, s in zip(signs, states)]
-        velocities = [sign * s[1] for sign, s in zip(signs, states)]
+        signs, drives = articulation.signs, articulation.drives
         raw_positions = [s[0] for s in states]
         inertia = joint_inertia(client, articulation, raw_positions)    # diagonal unchanged by the signs
-        diagonal = [float(inertia[dof][dof]) for dof in range(len(states))]
-        drives = articulation.drives
-        motors = [None if drive is None else
-                  motor_velocity(drive, targets.positions[dof], targets.velocities[dof], diagonal[dof],
-                                 positions[dof], signs[dof] * states[dof][3], dt)
-                  for dof, drive in enumerate(drives)]
+        target_positions, target_velocities = targets.positions, targets.velocities
+        positions, velocities, motors = [], [], []
+        for dof, (sign, state, drive) in enumerate(zip(signs, states, drives)):
+            position = sign * state[0]
+            positions.append(position)
+            velocities.append(sign * state[1])
+            motors.append(None if drive is None else
+                          motor_velocity(drive, target_positions[dof], target_velocities[dof], float(inertia[dof][dof]),
+                                         position, sign * state[3], dt))
         load, cancelling = self._joint_gravity(articulation, raw_positions)
         if all(motor is not None for motor in motors):     # every DOF a motor (the UR10): no torque law to solve
             efforts, accelerations = targets.efforts, None
@@ -146,6 +147,8 @@ class JointControl:
         if not cancel_off:
             return load, zeros
         holding_all = self.client.calculateInverseDynamics(articulation.body_id, positions, zeros, zeros)
+        if not on:        # no link carries its weight: the load is zero (the UR10, whose links all float)
+            return load, list(holding_all)
         return load, [hold + part for hold, part in zip(holding_all, load.tolist())]
 
 
