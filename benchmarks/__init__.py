@@ -26,8 +26,8 @@ from typing import Callable
 ROOT = Path(__file__).resolve().parent.parent
 GRAPHS = ROOT / "graphs"
 
-NAMES = ("dispatch", "pick_place_overhead", "plain_pybullet", "realtime", "instances", "startup", "memory",
-         "sweep_scaling")
+NAMES = ("dispatch", "pick_place_overhead", "plain_pybullet", "realtime", "finished_controllers", "instances", "startup",
+         "memory", "sweep_scaling")
 
 
 class Skip(Exception):
