@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import math
 
-SOLVER_RESIDUAL = 1.0e-6               # (m/s)^2: the solver stops iterating below this summed squared correction
+SOLVER_RESIDUAL = 3e-7               # (m/s)^2: the solver stops iterating below this summed squared correction
 MAX_INTERNAL_STEP = 1.0 / 240.0        # s: the coarsest PyBullet step at which contacts meet the targets
 PLANE_HALF_WIDTH = 500.0               # m: a UsdGeom.Plane collider's box reaches this far from its origin
 PLANE_HALF_THICKNESS = 5.0             # m: and this deep below the plane
