@@ -27,6 +27,7 @@ import os
 import shlex
 import sys
 import time
+from collections import deque
 from dataclasses import dataclass
 from itertools import product
 from pathlib import Path
@@ -693,8 +694,6 @@ class RayPool:
                 worker["queue"].append((worker["actor"].run.remote(episode), episode))
 
     def run(self, episodes: Sequence[Episode]) -> Iterable[dict]:
-        from collections import deque
-
         ray = self.ray
         self._init()
         try:
