@@ -7,8 +7,12 @@ open stage). Figures are wall-clock (parallel workers are the point), start-up i
 configuration runs the same episodes from a cold start (spawned workers import, parse the graph,
 open the stage). ``per_process`` runs each episode as its own ``graphflow run --set ... --randomize
 ... --seed`` process, what a shell loop would do. Ray (if installed) runs the same episodes on a
-local Ray started for the purpose; its start-up is reported apart (``ray_start``) and its overhead
-is measured from its first to its last record against the pool's. Targets: 2 workers at least 1.8x
+local Ray started for the purpose; its start-up (to the first record, ``ray_start``) and its shut-down
+(from the last record until ``ray.shutdown()`` returned, ``ray_stop``: 1 s of it is Ray's autoscaler
+monitor, whose SIGTERM handler reports to the GCS, already stopped, until it is killed after 1 s) are
+reported apart, and its overhead is the time from its first to its last record against the pool's
+(both start their workers inside the clock and build one runner per worker), summed over two runs
+of each in the order pool, Ray, Ray, pool. Targets: 2 workers at least 1.8x
 one worker on a quiet machine; Ray at most 10 % slower than the pool. ``pyramid``: episodes of
 ``sweeps/pyramid_randomized.json`` per CPU second in a warm runner (target at least 1 per core). Ratio = wall(2 workers) /
 wall(1 worker) (0.5 is perfect scaling). On a shared machine the wall figures follow the other
@@ -36,16 +40,18 @@ def _children_cpu() -> float:
     return usage.ru_utime + usage.ru_stime
 
 
-def _timed(executor, episodes) -> tuple[float, float, list[dict], float]:
-    """(wall seconds to the first record, wall seconds in all, records, CPU seconds of the joined workers)."""
+def _timed(executor, episodes) -> tuple[float, float, float, list[dict], float]:
+    """(wall seconds to the first record, to the last record, in all (shut-down included), records,
+    CPU seconds of the joined workers)."""
     cpu = _children_cpu()
     started = time.perf_counter()
-    first, records = None, []
+    first, last, records = None, None, []
     for record in executor.run(episodes):
+        last = time.perf_counter() - started
         if first is None:
-            first = time.perf_counter() - started
+            first = last
         records.append(record)
-    return first, time.perf_counter() - started, records, _children_cpu() - cpu
+    return first, last, time.perf_counter() - started, records, _children_cpu() - cpu
 
 
 def _quick_sweep(folder: Path) -> Path:
@@ -92,8 +98,8 @@ def run(quick: bool = False) -> str:
                 raise Skip(f"{SWEEP.relative_to(ROOT)} not found")
             sweep = load_sweep(str(SWEEP))
         episodes = sweep.episodes()[: 4 if quick else 16]
-        _first1, wall1, records1, cpu1 = _timed(LocalPool(sweep, 1), episodes)
-        _first2, wall2, records2, cpu2 = _timed(LocalPool(sweep, 2), episodes)
+        _first1, _last1, wall1, records1, cpu1 = _timed(LocalPool(sweep, 1), episodes)
+        first2, last2, wall2, records2, cpu2 = _timed(LocalPool(sweep, 2), episodes)
         strip = lambda rows: sorted((r["key"], json.dumps({k: v for k, v in r.items() if k != "wall"})) for r in rows)
         if strip(records1) != strip(records2):
             raise RuntimeError("1 and 2 workers gave different records")
@@ -114,16 +120,24 @@ def run(quick: bool = False) -> str:
         except ImportError:
             ray = None
         if ray is not None and not quick:
-            first_pool, wall_pool = _first2, wall2
-            first_ray, wall_ray, records_ray, _cpu = _timed(RayPool(sweep, 2, None), episodes)
-            if strip(records_ray) != strip(records2):
+            # pool, Ray, Ray, pool: a load that rises or falls during the four runs hits both sides alike
+            ray_runs = [_timed(RayPool(sweep, 2, None), episodes) for _ in range(2)]
+            pool_runs = [(first2, last2, wall2, records2, cpu2), _timed(LocalPool(sweep, 2), episodes)]
+            if any(strip(run[3]) != strip(records2) for run in ray_runs + pool_runs):
                 raise RuntimeError("Ray and the pool gave different records")
-            steady_ray, steady_pool = wall_ray - first_ray, wall_pool - first_pool
-            figures["ray"] = f"{n / wall_ray:.2f}ep/s"
-            figures["ray_start"] = f"{first_ray:.1f}s"
-            figures["ray_overhead"] = f"{100 * (steady_ray / steady_pool - 1):+.0f}%"
-            detail += (f"; Ray (2 actors) {wall_ray:.2f} s in all, first record after {first_ray:.2f} s, "
-                       f"then {steady_ray:.2f} s against the pool's {steady_pool:.2f} s (records identical)")
+            steady = lambda runs: sum(last - first for first, last, *_rest in runs)
+            mean = lambda values: sum(values) / len(values)
+            ray_start = mean([run[0] for run in ray_runs])
+            ray_stop = mean([run[2] - run[1] for run in ray_runs])
+            figures["ray"] = f"{n / mean([run[2] for run in ray_runs]):.2f}ep/s"
+            figures["ray_start"] = f"{ray_start:.1f}s"
+            figures["ray_stop"] = f"{ray_stop:.1f}s"
+            figures["ray_overhead"] = f"{100 * (steady(ray_runs) / steady(pool_runs) - 1):+.0f}%"
+            shown = lambda runs: ", ".join(f"{first:.2f} + {last - first:.2f} + {wall - last:.2f}"
+                                           for first, last, wall, *_rest in runs)
+            detail += (f"; Ray (2 actors) against the pool, run pool, Ray, Ray, pool, each as s to the first record "
+                       f"+ first to last record + shut-down: Ray {shown(ray_runs)}, pool {shown(pool_runs)} "
+                       "(records identical)")
         if not quick and PYRAMID.exists():
             pyramid_cpu = _pyramid_cpu_per_episode()
             figures["pyramid"] = f"{1 / pyramid_cpu:.2f}ep/s/core"

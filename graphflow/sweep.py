@@ -27,6 +27,7 @@ import os
 import shlex
 import sys
 import time
+from collections import deque
 from dataclasses import dataclass
 from itertools import product
 from pathlib import Path
@@ -651,7 +652,14 @@ class RayPool:
     ``address`` None or ``"local"`` starts a local Ray; ``"auto"`` joins the
     running cluster, else starts a local one; anything else is a cluster
     address for ``ray.init``. Files the sweep names must exist at the same
-    paths on every node. An actor that dies fails its episode and is replaced.
+    paths on every node. An actor that dies fails the episode it was running
+    and is replaced; the episode it had queued runs again elsewhere.
+
+    While more episodes wait than there are actors, each actor has a second
+    episode queued behind the one it runs, so it starts the next one at once
+    instead of idling through the driver's round trip (and whatever the
+    consumer does with the record); the last ones are handed out one at a
+    time, to whichever actor is free first.
     """
 
     def __init__(self, sweep: Sweep, jobs: int | None, address: str | None):
@@ -663,6 +671,7 @@ class RayPool:
         self.sweep = sweep
         self.jobs = jobs
         self.address = address
+        self.actors: list[dict] = []   # {"actor": handle, "queue": deque of (reference, episode), running first}
 
     def _init(self) -> None:
         ray = self.ray
@@ -677,6 +686,13 @@ class RayPool:
         else:
             ray.init(address=self.address, **options)
 
+    def _submit(self, pending: list) -> None:
+        """Queue pending episodes on the actors: two each while plenty wait, else one each."""
+        for worker in self.actors:
+            while pending and len(worker["queue"]) < (2 if len(pending) > len(self.actors) else 1):
+                episode = pending.pop()
+                worker["queue"].append((worker["actor"].run.remote(episode), episode))
+
     def run(self, episodes: Sequence[Episode]) -> Iterable[dict]:
         ray = self.ray
         self._init()
@@ -684,28 +700,27 @@ class RayPool:
             actor_class = ray.remote(num_cpus=1)(_RayEpisodeActor)
             count = self.jobs or max(1, int(ray.cluster_resources().get("CPU", 1)))
             pending = list(reversed(episodes))
-            actors = [actor_class.remote(self.sweep) for _ in range(min(count, len(episodes)))]
-            in_flight: dict = {}
-            for actor in actors:
-                if pending:
-                    episode = pending.pop()
-                    in_flight[actor.run.remote(episode)] = (actor, episode)
-            while in_flight:
-                done, _ = ray.wait(list(in_flight), num_returns=1)
-                reference = done[0]
-                actor, episode = in_flight.pop(reference)
+            self.actors = [{"actor": actor_class.remote(self.sweep), "queue": deque()}
+                           for _ in range(min(count, len(episodes)))]
+            self._submit(pending)
+            while any(worker["queue"] for worker in self.actors):
+                # an actor runs its episodes in order, so only the first one of each can finish next
+                running = {worker["queue"][0][0]: worker for worker in self.actors if worker["queue"]}
+                done, _ = ray.wait(list(running), num_returns=1)
+                worker = running[done[0]]
+                _reference, episode = worker["queue"].popleft()
                 try:
-                    record = ray.get(reference)
+                    record = ray.get(done[0])
                 except ray.exceptions.RayActorError as error:
                     record = failed_record(episode, f"worker crashed ({_first_line(error)})", self.sweep.metric_names)
-                    actor = actor_class.remote(self.sweep)
+                    pending.extend(queued for _reference, queued in reversed(worker["queue"]))
+                    worker["actor"], worker["queue"] = actor_class.remote(self.sweep), deque()
                 except ray.exceptions.RayTaskError as error:
                     record = failed_record(episode, f"worker error: {_first_line(error)}", self.sweep.metric_names)
+                self._submit(pending)
                 yield record
-                if pending:
-                    episode = pending.pop()
-                    in_flight[actor.run.remote(episode)] = (actor, episode)
         finally:
+            self.actors = []
             ray.shutdown()
 
 

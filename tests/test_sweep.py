@@ -240,6 +240,28 @@ def test_ray_gives_the_same_records_as_the_pool(tmp_path):
     assert comparable(records(tmp_path / "pool")) == comparable(records(tmp_path / "ray"))
 
 
+@pytest.mark.slow
+def test_a_ray_actor_that_dies_fails_only_the_episode_it_was_running(tmp_path):
+    """The long episode 0 runs with episode 1 queued behind it on the same actor: killing the actor fails
+    episode 0 only; episode 1 runs again elsewhere and passes."""
+    ray = pytest.importorskip("ray")
+    from graphflow.sweep import RayPool
+
+    sweep = load_sweep(str(write_sweep(tmp_path, grid={"at_least_three.b": [100000000, 1, 2, 3, 4]}, ticks=200000000)))
+    pool = RayPool(sweep, 2, None)
+    results = []
+    for record in pool.run(sweep.episodes()):
+        results.append(record)
+        if len(results) == 1:
+            busy = next(w for w in pool.actors if w["queue"] and w["queue"][0][1].index == 0)
+            assert [episode.index for _reference, episode in busy["queue"]] == [0, 1]
+            ray.kill(busy["actor"])
+    by_key = {r["key"]: r for r in results}
+    assert sorted(by_key) == ["p0-s0", "p1-s0", "p2-s0", "p3-s0", "p4-s0"]
+    assert by_key["p0-s0"]["failures"][0].startswith("worker crashed (") and not by_key["p0-s0"]["passed"]
+    assert all(by_key[k]["passed"] for k in ("p1-s0", "p2-s0", "p3-s0", "p4-s0"))
+
+
 def test_plot_writes_a_success_map_and_refuses_without_matplotlib(tmp_path):
     pytest.importorskip("matplotlib")
     sweep = write_sweep(tmp_path, grid={"at_least_three.b": [1, 2], "print_done.text": ["a", "b"]})
