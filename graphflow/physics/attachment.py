@@ -20,8 +20,9 @@ moved every step* by a compliance model of the D6:
   drive is held rigid instead of letting the object slide away).
 * ``L`` is the load on the object that the joint has to carry, measured, not
   guessed: the object's own Newton-Euler balance over the last step minus the
-  constraint's wrench (``getConstraintState``) gives gravity, contacts and
-  applied forces; the inertia of following the gripper rigidly is subtracted.
+  constraint's wrench (``getConstraintState``, averaged over the step's
+  substeps: the last substep's alone let a soft hold ring up) gives gravity,
+  contacts and applied forces; the inertia of following the gripper rigidly is subtracted.
   Because the constraint wrench that moves the object cancels out of this
   estimate, moving the frame does not feed back into the load.
 * While the held object touches anything (a table, a neighbouring box) each
@@ -78,6 +79,8 @@ class _Hold:
     rate: list[float] = field(default_factory=lambda: [0.0] * 6)
     previous: tuple | None = None  # last step's (object v, object w, rigid-follow v, gripper w)
     child: Pose | None = None      # the child frame the constraint enforces now (``child_at_attach`` displaced)
+    wrench_sum: list[float] = field(default_factory=lambda: [0.0] * 6)   # the constraint's wrench, summed over
+    wrench_count: int = 0                                                # the substeps of the stage step
     axes: tuple[AxisCompliance, ...] = ()   # limits of the first point, summed drives of all
 
     @property
@@ -231,6 +234,22 @@ class PyBulletAttachments:
 
     # -- compliance, run right after every physics step --
 
+    def after_substep(self) -> None:
+        """Add each compliant hold's constraint wrench of this PyBullet step to its stage step's sum.
+
+        The load estimate balances the object's motion over the whole stage step against the
+        constraint's wrench; PyBullet reports the wrench of the last substep only, and a soft hold's
+        constraint pulls hardest in the first substep after its frame moved: the last substep's
+        wrench alone fed back into the load made a 100 N/m, 1 N s/m hold of 1 kg ring up and fling
+        the cube metres away at four substeps."""
+        for hold in self._holds.values():
+            if not hold.rigid:
+                state = self.bullet.getConstraintState(hold.constraint)
+                total = hold.wrench_sum
+                for index in range(6):
+                    total[index] += state[index]
+                hold.wrench_count += 1
+
     def update(self, dt: float) -> None:
         """Advance every compliant hold one step (call right after each physics step)."""
         for hold in self._holds.values():
@@ -245,6 +264,7 @@ class PyBulletAttachments:
         v_rigid = _add(v_gripper, _cross(w_gripper, lever))
         current = (v_object, w_object, v_rigid, w_gripper)
         previous, hold.previous = hold.previous, current
+        state = self._mean_wrench(hold)      # this stage step's: the sum starts again either way
         if previous is None:
             return
         touching = bool(self.bullet.getContactPoints(bodyA=hold.target[0], linkIndexA=hold.target[1]))
@@ -254,7 +274,6 @@ class PyBulletAttachments:
         # the joint frame in world, at the displaced pose the constraint enforces
         child = hold.child or hold.child_at_attach
         frame = compose(target_com, child)
-        state = self.bullet.getConstraintState(hold.constraint)
         force_on_object = (-state[0], -state[1], -state[2])
         pivot_rotation = compose(gripper_com, hold.parent_frame)[1]
         torque_on_object = quat_rotate(pivot_rotation, (-state[3], -state[4], -state[5]))   # about the pivot
@@ -285,6 +304,14 @@ class PyBulletAttachments:
             hold.child = moved
             self.bullet.changeConstraint(hold.constraint, jointChildPivot=moved[0],
                                          jointChildFrameOrientation=moved[1], maxForce=HOLD_MAX_FORCE)
+
+    def _mean_wrench(self, hold: _Hold) -> list[float]:
+        """The constraint's wrench averaged over the stage step's substeps (then the sum starts again)."""
+        if not hold.wrench_count:
+            return list(self.bullet.getConstraintState(hold.constraint))
+        mean = [total / hold.wrench_count for total in hold.wrench_sum]
+        hold.wrench_sum, hold.wrench_count = [0.0] * 6, 0
+        return mean
 
     @staticmethod
     def _displaced_child(hold: _Hold) -> Pose:
@@ -345,6 +372,9 @@ class WorldAttachments:
 
     def torque_on_gripper(self, handle: int):
         return self.mechanism.torque_on_gripper(handle)
+
+    def after_substep(self) -> None:
+        self.mechanism.after_substep()
 
     def update(self, dt: float) -> None:
         self.mechanism.update(dt)

@@ -153,6 +153,7 @@ class PyBulletWorld(SceneLookups):
         for _ in range(self.substeps):
             self._apply_pre_step_forces(torques)
             self.client.stepSimulation()
+            self.attachments.after_substep()
         self._pending_forces = []
         broken = first_non_finite(self.client, self._health_plan)
         if broken is not None:
