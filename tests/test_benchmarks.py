@@ -64,7 +64,7 @@ def test_plain_pybullet_baseline_does_the_whole_pick_and_place():
     """The raw-PyBullet baseline is the same job, not a cheaper one: it carries the cube to the place target."""
     from benchmarks.plain_pybullet import PLACE, CUBE_START, PlainPickPlace
 
-    plain = PlainPickPlace(time_step=1 / 60, substeps=1, solver_iterations=50)
+    plain = PlainPickPlace(time_step=1 / 60, substeps=1, solver_iterations=50, solver_residual=3e-7)
     try:
         lifted = 0.0
         for _ in range(1127):                     # the graph's tick count
