@@ -174,6 +174,7 @@ class _Importer:
                     self._unsupported(str(path), f"{_enum_name(kind)} is not simulated")
         self._surface_grippers()
         self._solver_iterations(parsed.get(kinds.Scene))
+        self._unsimulated_sleep()
         return self._in_path_order(self.description)
 
     def _prim_problems(self) -> list[str]:
@@ -222,6 +223,15 @@ class _Importer:
         authored = [int(value) for value in authored if value is not None]
         if authored:
             counts["bodies"] = max(authored)
+
+    def _unsimulated_sleep(self):
+        """Name the bodies and articulations with an authored PhysX sleep threshold: graphflow keeps every
+        body awake (docs/physics.md: PyBullet's sleeping loses a woken body's first step)."""
+        owners = [(path, "physxRigidBody") for path in self.description.bodies]
+        owners += [(articulation.path, "physxArticulation") for articulation in self.description.articulations]
+        for path, prefix in owners:
+            if self._attribute(self.stage.GetPrimAtPath(path), f"{prefix}:sleepThreshold") is not None:
+                self._unsupported(path, f"{prefix}:sleepThreshold is not simulated: bodies never sleep")
 
     @staticmethod
     def _in_path_order(description: StageDescription) -> StageDescription:

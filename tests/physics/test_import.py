@@ -231,6 +231,18 @@ def test_unsupported_prims_warn_once_with_their_path():
     assert [path for path, _ in description.unsupported] == ["/World/Rope"]
 
 
+def test_an_authored_sleep_threshold_is_named_not_dropped():
+    """PhysX would let the body sleep; graphflow keeps every body awake and says so, once per body."""
+    stage = make_stage()
+    add_body(stage, "/World/Box", size=0.1, mass=1.0, position=(0, 0, 1.0))
+    add_body(stage, "/World/Other", size=0.1, mass=1.0, position=(1, 0, 1.0))
+    stage.GetPrimAtPath("/World/Box").CreateAttribute("physxRigidBody:sleepThreshold", Sdf.ValueTypeNames.Float).Set(0.5)
+    with pytest.warns(UnsupportedPrimWarning, match="/World/Box"):
+        description = load_description(stage)
+    assert description.unsupported == [("/World/Box", "physxRigidBody:sleepThreshold is not simulated: "
+                                                      "bodies never sleep")]
+
+
 def test_prims_the_build_leaves_out_warn_once_and_leave_the_parsed_stage_untouched():
     stage = make_stage()
     add_body(stage, "/World/Tool", size=0.1, mass=1.0, position=(0, 0, 1.0))
