@@ -14,6 +14,8 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Sequence
 
+from .poses import quat_matrix, quat_normalize
+
 if TYPE_CHECKING:
     import numpy as np
 
@@ -213,12 +215,7 @@ def _rpy_rotation(rpy) -> tuple[float, ...]:
 
 def _quaternion_rotation(quaternion) -> tuple[float, ...]:
     """The rotation matrix of a quaternion (x, y, z, w; normalised here), row-major."""
-    x, y, z, w = (float(c) for c in quaternion)
-    norm = math.sqrt(x * x + y * y + z * z + w * w)
-    x, y, z, w = x / norm, y / norm, z / norm, w / norm
-    return (1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w),
-            2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w),
-            2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y))
+    return quat_matrix(quat_normalize(tuple(float(c) for c in quaternion)))
 
 
 def _multiply(a, b) -> tuple[float, ...]:

@@ -15,8 +15,7 @@ from graphflow.spec import Attribute, NodeSpec
 from graphflow.poses import quat_from_axis_angle, quat_multiply
 
 from ._pick_place import (CLOSE_EVENT, COMMON_INPUTS, COMMON_OUTPUTS, COMMON_STATE, DONE, MOTION_INPUTS, mix,
-                          events_dt_problems, new_run, run_controller,
-                          controller_idle)
+                          controller_idle, events_dt_problems, new_run, run_controller)
 
 MOVE_TO_PLACE = 5
 

@@ -82,10 +82,7 @@ class _Hold:
     wrench_sum: list[float] = field(default_factory=lambda: [0.0] * 6)   # the constraint's wrench, summed over
     wrench_count: int = 0                                                # the substeps of the stage step
     axes: tuple[AxisCompliance, ...] = ()   # limits of the first point, summed drives of all
-
-    @property
-    def rigid(self) -> bool:
-        return all(axis.rigid for axis in self.axes)
+    rigid: bool = True                      # every axis rigid: no compliance model to run (set with ``axes``)
 
     def combine(self, first: tuple[AxisCompliance, ...]) -> None:
         """Parallel springs: stiffness and damping add up; limits stay the first point's."""
@@ -93,6 +90,7 @@ class _Hold:
                                          sum(c[i].stiffness for c in self.members.values()),
                                          sum(c[i].damping for c in self.members.values()))
                           for i in range(6))
+        self.rigid = all(axis.rigid for axis in self.axes)     # read every substep: derived once here
 
 
 class PyBulletAttachments:
