@@ -128,6 +128,8 @@ def command_run(args) -> int:
         _check_recording(args, document)
     if args.trace:
         _refuse_existing(args.trace, args.force)
+    if args.report:
+        _refuse_existing(args.report, args.force)
     try:
         keys = scripted_keys(args.keys, args.key)
         pad = scripted_pad(args.gamepad, args.pad)
@@ -171,8 +173,12 @@ def command_run(args) -> int:
             outputs.push(lambda kind, _error, _trace: topic_recording.abandon() if kind is not None
                          else topic_recording.close())
         simulation.add_listener(evaluator)
-        if args.trace:
-            _open_trace(args.trace, simulation, args.graph, outputs, args.force)
+        trace_stream = _open_trace(args.trace, outputs, args.force) if args.trace else None
+        report = _start_report(args, simulation, trace_stream)
+        if trace_stream is not None and report is None:
+            from .trace import TraceRecorder
+
+            TraceRecorder(simulation, trace_stream, graph=args.graph)
         if args.record:
             simulation.world.services.add(_start_recording(args, simulation.world, outputs))
         if args.gui and args.speed > 0:
@@ -190,6 +196,8 @@ def command_run(args) -> int:
             result = None
             verdict.failures.append(f"graphflow: run-time error: {error}")
             verdict.ticks, verdict.time = simulation.instance.tick_count, simulation.world.time
+        if report is not None:
+            _write_report(args, report, document, evaluator, changed, seed, result is None and verdict.failures)
     for line in verdict.failures:
         print(line, file=sys.stderr)
     summary = verdict.summary()
@@ -277,15 +285,32 @@ def _point(text: str) -> tuple[float, float, float]:
     return values
 
 
-def _open_trace(path: str, simulation, graph: str, outputs: contextlib.ExitStack, force: bool):
-    from .trace import TraceRecorder
+def _start_report(args, simulation, trace_stream):
+    """The run's report recording (graphflow.report), teed to the --trace file when both are asked for."""
+    if not args.report:
+        return None
+    from .report.recording import ReportRecording
 
+    return ReportRecording(simulation, args.graph, also_to=trace_stream, timings=args.report_timings)
+
+
+def _write_report(args, report, document, evaluator, changed, seed: int, failures) -> None:
+    from .randomize import load_randomization
+    from .report.recording import drawn_randomization
+
+    drawn = drawn_randomization(load_randomization(args.randomize).draw(seed)) if args.randomize else {}
+    judged = evaluator if (args.checks or not changed) else None
+    report.write(args.report, document, evaluator=judged, runtime_failure=failures[-1] if failures else None,
+                 seed=seed, overrides=args.set, randomization=drawn, force=args.force)
+    print(f"wrote {args.report}", file=sys.stderr)
+
+
+def _open_trace(path: str, outputs: contextlib.ExitStack, force: bool):
     try:
         temporary = outputs.enter_context(atomic_output(path, force=force))
         stream = outputs.enter_context(open(temporary, "w", encoding="utf-8", newline="\n"))
     except OSError as error:
         raise BadInput(f"{path}: cannot write the trace: {error.strerror}") from None
-    TraceRecorder(simulation, stream, graph=graph)
     return stream
 
 
@@ -346,6 +371,26 @@ def command_plot(args) -> int:
         raise BadInput(f"{args.output}: cannot write the plot: {error}") from None
     for note in drawn.notes:
         print(f"note: {note}")
+    print(f"wrote {args.output}")
+    return EXIT_OK
+
+
+def command_report(args) -> int:
+    from .report.recording import from_trace_file
+    from .trace import TraceError, read_trace
+
+    _refuse_existing(args.output, args.force)
+    try:
+        graph = args.graph or read_trace(args.trace).header.get("graph")
+    except TraceError as error:
+        raise BadInput(str(error)) from None
+    if not graph:
+        raise BadInput(f"{args.trace}: the trace names no graph file; give it with --graph")
+    document = _load(graph)
+    try:
+        from_trace_file(args.trace, document, args.output, force=args.force)
+    except TraceError as error:
+        raise BadInput(str(error)) from None
     print(f"wrote {args.output}")
     return EXIT_OK
 
@@ -521,9 +566,13 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--log-level", default="warning", choices=["debug", "info", "warning", "error"],
                      help="Python logging level on stderr (default warning)")
     run.add_argument("--trace", metavar="FILE", help="write what happens every tick as JSON Lines (docs/trace.md)")
+    run.add_argument("--report", metavar="FILE.html",
+                     help="write a self-contained HTML report of the run: graph, scene, lanes, verdict (docs/report.md)")
+    run.add_argument("--report-timings", action="store_true",
+                     help="put per-node wall-clock compute times in the report (it is then no longer byte-identical)")
     run.add_argument("--record", metavar="FILE", help="record a video: .gif, .mp4 (needs ffmpeg) or a folder of PNG frames")
     run.add_argument("--fps", type=_positive_float, default=15.0, help="video frames per simulated second (default 15)")
-    run.add_argument("--force", action="store_true", help="overwrite existing --trace / --record outputs")
+    run.add_argument("--force", action="store_true", help="overwrite existing --trace / --record / --report outputs")
     run.add_argument("--size", type=_size, default=(480, 360), metavar="WxH", help="video size in pixels (default 480x360)")
     run.add_argument("--camera-target", type=_point, metavar="X,Y,Z", help="point the camera looks at (default: the scene's centre)")
     run.add_argument("--camera-distance", type=_positive_float, metavar="M", help="camera distance (default: fit the scene)")
@@ -544,7 +593,8 @@ def build_parser() -> argparse.ArgumentParser:
     test.add_argument("-j", "--jobs", type=_positive_int, metavar="N", help="processes at once (default: as many as cores)")
     test.add_argument("--junit", metavar="FILE", help="write a JUnit XML report")
     test.add_argument("--traces", metavar="DIR", help="folder for failing scenarios' traces (default: a new temporary folder)")
-    test.add_argument("--force", action="store_true", help="overwrite an existing --junit file")
+    test.add_argument("--reports", metavar="DIR", help="write an HTML report per scenario into DIR (linked from --junit)")
+    test.add_argument("--force", action="store_true", help="overwrite an existing --junit file or reports")
     test.set_defaults(handler=command_test)
 
     validate = commands.add_parser(
@@ -587,6 +637,13 @@ def build_parser() -> argparse.ArgumentParser:
     draw.add_argument("--format", choices=["svg", "png", "mermaid", "dot"], help="picture format (default: from the suffix)")
     draw.add_argument("--force", action="store_true", help="overwrite an existing picture")
     draw.set_defaults(handler=command_draw)
+
+    report = commands.add_parser("report", help="make the HTML run report of a trace (graphflow run --trace)")
+    report.add_argument("trace", help="trace file written by graphflow run --trace")
+    report.add_argument("-o", "--output", required=True, metavar="FILE.html", help="report file to write")
+    report.add_argument("--graph", help="graph file the trace ran (default: the one its header names)")
+    report.add_argument("--force", action="store_true", help="overwrite an existing report")
+    report.set_defaults(handler=command_report)
 
     plot = commands.add_parser("plot", help="plot a run trace: controller phase, gripper status, held height, force")
     plot.add_argument("trace", help="trace file written by graphflow run --trace")

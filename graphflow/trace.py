@@ -23,7 +23,8 @@ from . import __version__
 from .types import ExecState
 
 TRACE_FORMAT = "graphflow-trace"
-TRACE_VERSION = 1
+TRACE_VERSION = 2            # 2 added the scene section (graphflow.trace_scene); 1 is still read
+READABLE_VERSIONS = (1, 2)
 PHASE_OUTPUT = "eventName"   # an output with this name carries a controller's phase (PickPlaceController)
 
 _STATE_SUFFIX = {ExecState.ENABLED: "", ExecState.ENABLED_AND_PUSH: ":push",
@@ -156,6 +157,9 @@ class TraceRecorder:
         self._exec_names = [frozenset(a.name for a in node.spec.exec_outputs) for node in nodes]
         self._databases = [self.instance.database(node.name) for node in nodes]
         self._outputs = self._output_values()
+        from .trace_scene import SceneSection
+
+        self._scene = SceneSection(simulation)
         self._write_header(graph)
         simulation.add_listener(self)
 
@@ -197,6 +201,7 @@ class TraceRecorder:
             logs.append({"node": event.node, "level": event.level, "message": event.message})
         if logs:
             record["log"] = logs[::-1]
+        record.update(self._scene.record(surface_gripper_manager(self.simulation.world)))
         self.stream.write(dumps_record(record) + "\n")
 
     def _output_values(self) -> dict[str, Any]:
@@ -223,6 +228,7 @@ class TraceRecorder:
             "phases": phase_outputs(compiled),
             "grippers": initial_grippers(world),
             "versions": loaded_versions(),
+            **self._scene.header(),
         }
         self.stream.write(dumps_record(header) + "\n")
 
@@ -294,8 +300,9 @@ def read_trace(path: str | Path) -> Trace:
         records.append(record)
     if not records or records[0].get("format") != TRACE_FORMAT:
         raise TraceError(f"{path}: not a graphflow trace (the first line must be a header with format {TRACE_FORMAT!r})")
-    if records[0].get("version") != TRACE_VERSION:
-        raise TraceError(f"{path}: trace version {records[0].get('version')!r} is not supported (this reads {TRACE_VERSION})")
+    if records[0].get("version") not in READABLE_VERSIONS:
+        raise TraceError(f"{path}: trace version {records[0].get('version')!r} is not supported "
+                         f"(this reads {', '.join(map(str, READABLE_VERSIONS))})")
     return Trace(records[0], records[1:])
 
 

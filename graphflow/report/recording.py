@@ -1,0 +1,69 @@
+"""Recording a run for its report: the trace kept in memory (and teed to ``--trace``), then the report written.
+
+``graphflow run --report`` and ``graphflow test --reports`` use this; ``graphflow
+report TRACE`` builds the same data from a trace file instead (``from_trace_file``).
+"""
+from __future__ import annotations
+
+import dataclasses
+import io
+import json
+
+from ..trace import Trace, TraceRecorder, read_trace, to_json_value
+from .build import RunInfo, run_data
+from .page import write_report
+from .timing import ComputeTimer
+from .verdict import check_entries
+
+
+class _Tee:
+    """A text stream writing to several streams (the report's buffer and the --trace file)."""
+
+    def __init__(self, *streams):
+        self.streams = streams
+
+    def write(self, text: str) -> int:
+        for stream in self.streams:
+            stream.write(text)
+        return len(text)
+
+
+class ReportRecording:
+    """Records a simulation's trace in memory for a report; ``write()`` after the run ends."""
+
+    def __init__(self, simulation, graph: str, *, also_to=None, timings: bool = False):
+        self.buffer = io.StringIO()
+        self.simulation = simulation
+        TraceRecorder(simulation, _Tee(self.buffer, also_to) if also_to is not None else self.buffer, graph=graph)
+        self.timer = ComputeTimer(simulation) if timings else None
+
+    def trace(self) -> Trace:
+        records = [json.loads(line) for line in self.buffer.getvalue().splitlines()]
+        return Trace(records[0], records[1:])
+
+    def write(self, path, document, *, evaluator=None, runtime_failure: str | None = None, seed: int | None = None,
+              overrides=(), randomization: dict | None = None, force: bool = False) -> None:
+        """The report of the run so far; *evaluator* None: checks not judged (they did not apply to this run)."""
+        trace = self.trace()
+        times = [0.0] + [record["t"] for record in trace.ticks]
+        checks = None
+        if evaluator is not None and (len(evaluator) or runtime_failure is not None):
+            checks = tuple(check_entries(evaluator, times, runtime_failure))
+        info = RunInfo(seed=seed, overrides=tuple(overrides), randomization=randomization or {}, checks=checks,
+                       timings=self.timer.table() if self.timer is not None else None)
+        write_report(run_data(trace, document, info), path, force=force)
+
+
+def drawn_randomization(edits) -> dict:
+    """Each drawn edit (graphflow.randomize) by its label: a value, or a pose jitter's offset and yaw."""
+    drawn = {}
+    for edit in edits:
+        fields = {key: value for key, value in dataclasses.asdict(edit).items() if key not in ("origin", "text")}
+        value = fields["value"] if "value" in fields else {k: v for k, v in fields.items() if k != "prim"}
+        drawn[edit.label()] = to_json_value(value)
+    return drawn
+
+
+def from_trace_file(trace_path, document, path, *, force: bool = False) -> None:
+    """A report from a trace written earlier: everything but the verdict (a trace holds no verdict)."""
+    write_report(run_data(read_trace(trace_path), document, RunInfo()), path, force=force)
