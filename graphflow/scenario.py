@@ -118,12 +118,13 @@ class _CollectedLog:
             self.lines.append(event.message)
 
 
-def run_scenario(path: str | Path, *, trace: str | Path | None = None) -> ScenarioResult:
+def run_scenario(path: str | Path, *, trace: str | Path | None = None, report: str | Path | None = None) -> ScenarioResult:
     """Run the graph at *path* headless with its scenario inputs and evaluate its checks.
 
     Bad input (a graph that does not load, a missing stage or key file) raises
     ``GraphError`` / ``ValueError`` / ``OSError``; a run-time failure (an Assert,
-    a failing node) is a failed result naming the node, tick and time.
+    a failing node) is a failed result naming the node, tick and time. *report*: an HTML run report
+    (graphflow.report) is written there, passed or failed.
     """
     from .keyboard import attach_keyboard
     from .gamepad import attach_gamepad
@@ -142,13 +143,20 @@ def run_scenario(path: str | Path, *, trace: str | Path | None = None) -> Scenar
             attach_keyboard(simulation.world, keys)
         if pad is not None:
             attach_gamepad(simulation.world, pad)
+        stream = None
         if trace is not None:
-            from .trace import TraceRecorder
-
             stream = open(trace, "w", encoding="utf-8", newline="\n")
             closers.append(stream.close)
-            TraceRecorder(simulation, stream, graph=path)
             result.trace = str(trace)
+        recording = None
+        if report is not None:
+            from .report.recording import ReportRecording
+
+            recording = ReportRecording(simulation, path, also_to=stream)
+        elif stream is not None:
+            from .trace import TraceRecorder
+
+            TraceRecorder(simulation, stream, graph=path)
 
         seconds = run_seconds(document, evaluator, None, None)
         if seconds is None:   # a scenario must end by itself: nothing hangs
@@ -158,9 +166,14 @@ def run_scenario(path: str | Path, *, trace: str | Path | None = None) -> Scenar
         except GraphRuntimeError as error:
             result.failures.append(f"{path}: run-time failure: {error}")
             result.ticks, result.time = simulation.instance.tick_count, simulation.world.time
+            if recording is not None:
+                recording.write(report, document, evaluator=evaluator, runtime_failure=str(error),
+                                seed=int(document.scenario.get("seed", 0)), force=True)
             return result
         result.ticks, result.time = run.ticks, run.time
         result.failures.extend(str(failure) for failure in evaluator.finish(simulation, run))
+        if recording is not None:
+            recording.write(report, document, evaluator=evaluator, seed=int(document.scenario.get("seed", 0)), force=True)
         return result
     finally:
         for close in closers:

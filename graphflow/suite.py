@@ -63,6 +63,7 @@ class Outcome:
     wall: float = 0.0
     trace: str | None = None
     output: list[str] = field(default_factory=list)
+    report: str | None = None       # the scenario's HTML run report (graphflow test --reports)
 
     @property
     def passed(self) -> bool:
@@ -77,41 +78,45 @@ class Outcome:
         if not self.passed:
             if self.trace:
                 lines.append(f"    trace: {self.trace}")
+            if self.report:
+                lines.append(f"    report: {self.report}")
             lines.append(f"    re-run: {rerun_command(self.path)}")
         return lines
 
 
-def run_one(path: str, trace: str) -> Outcome:
-    """Worker: run one scenario with a trace; the trace is deleted when the scenario passes."""
+def run_one(path: str, trace: str, report: str | None = None) -> Outcome:
+    """Worker: run one scenario with a trace (deleted when the scenario passes) and, if asked, a report (kept)."""
     from .document import GraphError
 
     logging.getLogger("graphflow").setLevel(logging.ERROR)   # the graph's lines go to the report, not stderr
     started = time.perf_counter()
     try:
-        result = run_scenario(path, trace=trace)
+        result = run_scenario(path, trace=trace, report=report)
     except GraphError as error:
         return Outcome(path, None, error=str(error).splitlines()[0], wall=time.perf_counter() - started)
     except (ValueError, OSError) as error:
         return Outcome(path, None, error=str(error), wall=time.perf_counter() - started)
-    outcome = Outcome(path, result, wall=time.perf_counter() - started, trace=trace, output=result.output)
+    outcome = Outcome(path, result, wall=time.perf_counter() - started, trace=trace, output=result.output, report=report)
     if result.passed:
         os.unlink(trace)
         outcome.trace = None
     return outcome
 
 
-def run_all(paths: list[Path], jobs: int, trace_dir: Path, report=print) -> list[Outcome]:
+def run_all(paths: list[Path], jobs: int, trace_dir: Path, report=print, report_dir: Path | None = None) -> list[Outcome]:
     """Run every scenario on *jobs* processes; report each one's lines in the given order as it is known."""
     traces = [str(trace_dir / f"{index:03d}-{path.stem}.jsonl") for index, path in enumerate(paths)]
+    reports = [str(report_dir / f"{index:03d}-{path.stem}.html") if report_dir is not None else None
+               for index, path in enumerate(paths)]
     outcomes = []
     if jobs <= 1 or len(paths) == 1:
-        for path, trace in zip(paths, traces):
-            outcomes.append(run_one(str(path), trace))
+        for path, trace, html in zip(paths, traces, reports):
+            outcomes.append(run_one(str(path), trace, html))
             for line in outcomes[-1].lines():
                 report(line)
         return outcomes
     with ProcessPoolExecutor(max_workers=min(jobs, len(paths))) as pool:
-        futures = [pool.submit(run_one, str(path), trace) for path, trace in zip(paths, traces)]
+        futures = [pool.submit(run_one, str(path), trace, html) for path, trace, html in zip(paths, traces, reports)]
         for future in futures:
             outcomes.append(future.result())
             for line in outcomes[-1].lines():
@@ -132,6 +137,9 @@ def junit_xml(outcomes: list[Outcome]) -> bytes:
         path = Path(outcome.path)
         case = ET.SubElement(suite, "testcase", name=path.name, classname=path.parent.as_posix().replace("/", ".").strip(".") or "graphs",
                              file=outcome.path, time=f"{outcome.wall:.3f}")
+        if outcome.report:   # the run report beside the verdict (CI servers show testcase properties)
+            properties = ET.SubElement(case, "properties")
+            ET.SubElement(properties, "property", name="report", value=outcome.report)
         if outcome.error is not None:
             ET.SubElement(case, "error", message=outcome.error, type="BadInput").text = outcome.error
         elif not outcome.passed:
@@ -175,7 +183,14 @@ def command_test(args, report=print) -> int:
         trace_dir.mkdir(parents=True, exist_ok=True)
     else:
         trace_dir = Path(tempfile.mkdtemp(prefix="graphflow-test-"))
-    outcomes = run_all(paths, args.jobs or os.cpu_count() or 1, trace_dir, report)
+    report_dir = None
+    if getattr(args, "reports", None):
+        report_dir = Path(args.reports)
+        report_dir.mkdir(parents=True, exist_ok=True)
+        existing = [p.name for p in report_dir.glob("*.html")] if not args.force else []
+        if existing:
+            raise FileExistsError(f"{report_dir}: already holds reports ({existing[0]}, ...); not overwriting them (use --force)")
+    outcomes = run_all(paths, args.jobs or os.cpu_count() or 1, trace_dir, report, report_dir)
     if not args.traces and not any(o.trace for o in outcomes):
         shutil.rmtree(trace_dir, ignore_errors=True)
     if junit is not None:

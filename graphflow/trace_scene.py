@@ -59,7 +59,7 @@ class SceneSection:
         self._gripper_status: dict[str, str] = {}
 
     def header(self) -> dict:
-        """``scene``: up axis, pose rate, each body's kind, pose and shapes, in the description's order."""
+        """``scene``: up axis, pose rate, each body's kind, pose and shapes (description order), articulation links."""
         if not self.bodies:
             return {}
         bodies = []
@@ -69,7 +69,8 @@ class SceneSection:
                 self._poses[path] = pose
             bodies.append({"path": path, "kind": body.kind, "pose": pose, "shapes": [_shape(s) for s in body.shapes]})
         description = self.world.description
-        return {"scene": {"upAxis": description.up_axis, "poseEvery": self.pose_every, "bodies": bodies}}
+        links = sorted({path for articulation in description.articulations for path in articulation.bodies})
+        return {"scene": {"upAxis": description.up_axis, "poseEvery": self.pose_every, "bodies": bodies, "links": links}}
 
     def record(self, manager) -> dict:
         """This tick's ``computed`` nodes, sampled ``poses`` that changed and the ``rays`` of closes that began."""

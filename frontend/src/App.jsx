@@ -4,7 +4,7 @@ import GraphView from "./GraphView.jsx";
 import SceneView from "./SceneView.jsx";
 import Lanes from "./Lanes.jsx";
 import NodePanel from "./NodePanel.jsx";
-import { formatNumber, indexRun, valueAt } from "./data.js";
+import { formatNumber, indexAt, indexRun, valueAt } from "./data.js";
 
 const SPEEDS = { "1×": 1, "4×": 4, max: Infinity };
 const MAX_TICKS_PER_FRAME = 8;
@@ -59,6 +59,8 @@ function TickPanel({ run, index, tick }) {
     return entry ? entry[1] : [];
   }, [run, tick]);
   const logs = run.log.filter(([at]) => at === tick);
+  const closeIndex = indexAt(run.rays, tick, (close) => close.tick);
+  const close = closeIndex >= 0 ? run.rays[closeIndex] : null;
   return (
     <section className="gf-tick" data-testid="tick-panel">
       <h2>Tick {tick} · t = {formatNumber(run.times[tick] ?? 0)} s</h2>
@@ -71,6 +73,14 @@ function TickPanel({ run, index, tick }) {
           return <li key={order} data-pulse={pulse}>{key}{state ? ` (${state})` : ""} → {targets.length ? targets.join(", ") : "nothing connected"}</li>;
         })}
       </ol>
+      {close && (<><h3>Last close: {close.gripper.split("/").pop()} at tick {close.tick}</h3>
+        <ul className="gf-rays" data-testid="rays">{close.rays.map((ray) => (
+          <li key={ray.point} data-point={ray.point} data-reach={ray.reach} data-hit={ray.hit ? ray.hit.prim : ""}
+              data-hit-distance={ray.hit ? ray.hit.distance : ""}>
+            {ray.point.split("/").pop()}: reach {(ray.reach * 1000).toFixed(1)} mm;{" "}
+            {ray.hit ? `nearest hit ${ray.hit.prim} at ${(ray.hit.distance * 1000).toFixed(1)} mm${ray.hit.distance > ray.reach ? " (beyond reach)" : ""}`
+              : "nothing within 1 m"}
+          </li>))}</ul></>)}
       {logs.length > 0 && (<><h3>Log</h3><ul className="gf-log">{logs.map(([, node, level, message], i) =>
         <li key={i} className={`gf-log-${level}`}>{node}: {message}</li>)}</ul></>)}
     </section>

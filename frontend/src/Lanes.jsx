@@ -18,6 +18,11 @@ function spans(changes, ticks) {
   return result;
 }
 
+function laneText(value, limit) {
+  const text = typeof value === "string" ? value : shortValue(value, limit);
+  return text.length > limit ? text.slice(0, Math.max(1, limit - 1)) + "…" : text;
+}
+
 function SpanLane({ label, changes, ticks, colour, testid }) {
   const colours = {};
   return (
@@ -30,9 +35,9 @@ function SpanLane({ label, changes, ticks, colour, testid }) {
         return (
           <g key={span.start}>
             <rect x={x} y={2} width={width} height={LANE - 4} fill={colours[key]} stroke="#fff" strokeWidth="0.5">
-              <title>{`${label}: ${key} (ticks ${span.start}–${span.end})`}</title>
+              <title>{`${label}: ${laneText(span.value, 200)} (ticks ${span.start}–${span.end})`}</title>
             </rect>
-            {width > 40 && <text x={x + 3} y={LANE / 2 + 4} className="gf-lane-text">{shortValue(span.value, Math.floor(width / 6))}</text>}
+            {width > 40 && <text x={x + 3} y={LANE / 2 + 4} className="gf-lane-text">{laneText(span.value, Math.floor(width / 6))}</text>}
           </g>
         );
       })}
@@ -40,35 +45,42 @@ function SpanLane({ label, changes, ticks, colour, testid }) {
   );
 }
 
-function PlotLane({ changes, ticks, limits = [], everyTick }) {
+function PlotLane({ changes, ticks, limits = [] }) {
   const numeric = changes.filter(([, value]) => typeof value === "number" && Number.isFinite(value));
-  const maximum = Math.max(1e-9, ...numeric.map(([, v]) => Math.abs(v)), ...limits.map((l) => l.value));
+  const peak = Math.max(1e-9, ...numeric.map(([, v]) => Math.abs(v)));
+  // a limit far above the values would flatten them: it is drawn only when within 3x the peak, else named
+  const shown = [];
+  for (const limit of limits) {
+    const same = shown.find((other) => other.value === limit.value);
+    if (same) same.name += ` / ${limit.name}`;
+    else shown.push({ ...limit });
+  }
+  const maximum = Math.max(peak, ...shown.filter((l) => l.value <= 3 * peak).map((l) => l.value)) * 1.05;
   const minimum = Math.min(0, ...numeric.map(([, v]) => v));
   const y = (value) => PLOT - 3 - ((value - minimum) / (maximum - minimum)) * (PLOT - 8);
   let points = "";
   changes.forEach(([tick, value], index) => {
-    const number = typeof value === "number" && Number.isFinite(value) ? value : null;
-    if (number === null) return;
+    if (typeof value !== "number" || !Number.isFinite(value)) return;
     const x = (tick / ticks) * WIDTH;
-    if (!everyTick && index > 0) {
-      const previous = changes[index - 1][1];
-      if (typeof previous === "number") points += `${x},${y(previous)} `;
-    }
-    points += `${x},${y(number)} `;
+    const previous = index > 0 ? changes[index - 1][1] : null;
+    if (typeof previous === "number" && Number.isFinite(previous)) points += `${x},${y(previous)} `;
+    points += `${x},${y(value)} `;
   });
+  const offScale = shown.filter((limit) => limit.value > maximum);
   return (
     <g>
       <polyline points={points} fill="none" stroke="#2a7bd6" strokeWidth="1.2" vectorEffect="non-scaling-stroke" />
-      {limits.map((limit) => (
+      {shown.filter((limit) => limit.value <= maximum).map((limit) => (
         <g key={limit.name}>
           <line x1={0} x2={WIDTH} y1={y(limit.value)} y2={y(limit.value)} stroke="#d64545" strokeDasharray="6 4"
                 vectorEffect="non-scaling-stroke" />
           <text x={WIDTH - 4} y={y(limit.value) - 2} textAnchor="end" className="gf-lane-text gf-limit">
-            {`${limit.name} ${limit.value} N`}
+            {`${limit.name} limit ${formatValue(limit.value)}`}
           </text>
         </g>
       ))}
-      <text x={4} y={10} className="gf-lane-text">{`max ${formatValue(maximum)}`}</text>
+      <text x={4} y={10} className="gf-lane-text">{numeric.length ? `peak ${formatValue(peak)}` : "nothing held"}
+        {offScale.length > 0 && `; ${offScale.map((l) => `${l.name} limit ${formatValue(l.value)}`).join(", ")} (off scale)`}</text>
     </g>
   );
 }

@@ -164,7 +164,13 @@ export default function SceneView({ run, tick, held, onReady }) {
     controls.addEventListener("change", render);
     const observer = new ResizeObserver(resize);
     observer.observe(element);
-    state.current = { ...built, camera, renderer, render, shownClose: null };
+    const focus = (point, distance) => {   // look closely at a point (a gripper's rays are millimetres long)
+      const target = new THREE.Vector3(...point);
+      camera.position.copy(target).add(new THREE.Vector3(0.6, -0.8, 0.45).multiplyScalar(distance));
+      controls.target.copy(target);
+      controls.update();
+    };
+    state.current = { ...built, camera, renderer, render, focus, shownClose: null };
     resize();
     onReady?.(state.current);
     return () => {
@@ -196,5 +202,16 @@ export default function SceneView({ run, tick, held, onReady }) {
     current.render();
   }, [run, tick, held]);
 
-  return <div className="gf-scene" ref={mount} data-testid="scene" />;
+  const focusRays = () => {
+    const close = state.current?.shownClose;
+    const ray = close?.rays.find((r) => r.origin);
+    if (ray) state.current.focus(ray.origin, 0.12);
+  };
+  const closeShown = indexAt(run.rays, tick, (close) => close.tick) >= 0;
+  return (
+    <div className="gf-scene-box">
+      <div className="gf-scene" ref={mount} data-testid="scene" />
+      {closeShown && <button className="gf-focus" onClick={focusRays} data-testid="focus-rays">zoom to the gripper's rays</button>}
+    </div>
+  );
 }

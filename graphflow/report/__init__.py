@@ -9,4 +9,4 @@ verdict into the JSON the page reads, and ``page.write_report`` embeds it.
 from .build import RunInfo, run_data
 from .page import render_report, write_report
 
-__all__ = ["RunInfo", "run_data", "render_report", "write_report"]
+__all__ = ["RunInfo", "render_report", "run_data", "write_report"]
