@@ -147,15 +147,17 @@ export default function App({ run }) {
   useEffect(() => {   // what tests and scripts read: the shown tick and the rendered scene
     window.graphflowReport = {
       tick: () => tick,
+      ticks: run.ticks,
       setTick,
       bodyPosition: (path) => {
         const body = sceneRef.current?.bodies[path];
         return body ? body.group.position.toArray() : null;
       },
       shownRays: () => (sceneRef.current?.shownClose ?? null),
+      drawnAt: performance.now(),   // when this tick's panels and scene were drawn (the scrub benchmark)
     };
     document.body.dataset.tick = String(tick);
-  }, [tick, setTick]);
+  }, [tick, setTick, run]);
 
   return (
     <div className="gf-app">
