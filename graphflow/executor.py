@@ -25,13 +25,14 @@ from typing import Any, Callable, Iterable
 
 import networkx as nx
 
-from .model import GraphDocument
-from .registry import Registry
-from .spec import NodeSpec, NodeType
-from .files import one_line
-from .types import MAX_VALUE_DEPTH, ExecState, nesting_exceeds
-from .messages import usd_message
-from .world import DEFAULT_TIME_STEP, ClockWorld, World
+from graphflow.errors import RunFailure
+from graphflow.files import one_line
+from graphflow.messages import usd_message
+from graphflow.model import GraphDocument
+from graphflow.registry import Registry
+from graphflow.spec import NodeSpec, NodeType
+from graphflow.types import MAX_VALUE_DEPTH, ExecState, nesting_exceeds
+from graphflow.world import DEFAULT_TIME_STEP, ClockWorld, World
 
 DEFAULT_STEP_BUDGET = 100_000
 KEPT_LOG_EVENTS = 10_000   # the event log keeps the newest lines so long runs stay flat in memory
@@ -48,7 +49,7 @@ def _discard(_entry) -> None:
     """Where ``compute_node`` sends the entries a compute enables: nowhere."""
 
 
-class GraphRuntimeError(RuntimeError):
+class GraphRuntimeError(RunFailure):
     """A run-time failure naming the node (exit code 1 from the CLI)."""
 
     def __init__(self, message: str, node: str | None = None):

@@ -5,8 +5,8 @@ import types
 import graphflow_nodes
 import pytest
 
-from graphflow.document import parse_document
 from graphflow.compiler import compile
+from graphflow.document import parse_document
 from graphflow.executor import GraphRuntimeError, StepBudgetExceeded
 from graphflow.registry import Registry, default_registry
 from graphflow.spec import Attribute, NodeSpec
@@ -226,7 +226,7 @@ def test_event_sources_fire_in_document_order():
 def test_core_engine_imports_neither_pybullet_nor_pxr():
     import subprocess
 
-    code = ("import sys, graphflow.cli, graphflow.executor, graphflow.runtime, graphflow.testing;"
+    code = ("import sys, graphflow.cli, graphflow.executor, graphflow.runtime, graphflow.testing.harness;"
             "from graphflow.registry import default_registry; default_registry();"
             "from graphflow.testing import GraphHarness;"
             "GraphHarness({'nodes':[{'name':'t','type':'omni.graph.action.OnTick'}]}).run(3);"
