@@ -20,7 +20,7 @@ from typing import Any
 
 import networkx as nx
 
-from graphflow.executor import CompiledGraph
+from graphflow.compiled import CompiledGraph
 from graphflow.model import GraphDocument, GraphError, NodeDoc, Problem
 from graphflow.registry import Registry, default_registry
 from graphflow.spec import NodeType

@@ -83,7 +83,7 @@ class Simulation:
         self._tick_listeners: tuple[Callable[[Simulation, int], None], ...] = tuple(
             listener.on_tick for listener in self.listeners if getattr(listener, "on_tick", None) is not None)
         self.instances: list[GraphInstance] = [
-            self.compiled.instantiate(self.world, listeners=self.listeners) for _ in range(instances)]
+            GraphInstance(self.compiled, self.world, listeners=self.listeners) for _ in range(instances)]
 
     @classmethod
     def load(cls, path, **options) -> "Simulation":

@@ -49,7 +49,7 @@ class NodeHarness:
             node["typeVersion"] = type_version
         document = parse_document(_complete({"nodes": [node]}), source=f"<harness {type_id}>", registry=registry)
         self.world = world if world is not None else ClockWorld(time_step)
-        self.instance: GraphInstance = compile(document, registry).instantiate(self.world)
+        self.instance: GraphInstance = GraphInstance(compile(document, registry), self.world)
         self.database = self.instance.database(HARNESS_NODE)
 
     @property
