@@ -11,8 +11,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ..draw import HEADER_HEIGHT, ROW_HEIGHT, layout
-from ..trace import Trace
+from graphflow.observe.draw import HEADER_HEIGHT, ROW_HEIGHT, layout
+from graphflow.observe.trace import Trace
 
 POSE_DECIMALS = 5
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 import json
 from importlib import resources
 
-from ..files import write_text
+from graphflow.files import write_text
 
 DATA_MARK = "<!--graphflow-run-data-->"
 

@@ -9,11 +9,11 @@ import dataclasses
 import io
 import json
 
-from ..trace import Trace, TraceRecorder, read_trace, to_json_value
-from .build import RunInfo, run_data
-from .page import write_report
-from .timing import ComputeTimer
-from .verdict import check_entries
+from graphflow.observe.trace import Trace, TraceRecorder, to_json_value
+from graphflow.report.build import RunInfo, run_data
+from graphflow.report.page import write_report
+from graphflow.report.timing import ComputeTimer
+from graphflow.report.verdict import check_entries
 
 
 class _Tee:
@@ -54,6 +54,12 @@ class ReportRecording:
         write_report(run_data(trace, document, info), path, force=force)
 
 
+def runtime_failure(checked) -> str | None:
+    """The failure line of a CheckedRun that a failing node ended before its checks were judged, else None."""
+    failures = checked.verdict.failures
+    return failures[-1] if failures and checked.evaluator.failures is None else None
+
+
 def drawn_randomization(edits) -> dict:
     """Each drawn edit (graphflow.randomize) by its label: a value, or a pose jitter's offset and yaw."""
     drawn = {}
@@ -64,6 +70,6 @@ def drawn_randomization(edits) -> dict:
     return drawn
 
 
-def from_trace_file(trace_path, document, path, *, force: bool = False) -> None:
+def from_trace(trace: Trace, document, path, *, force: bool = False) -> None:
     """A report from a trace written earlier: everything but the verdict (a trace holds no verdict)."""
-    write_report(run_data(read_trace(trace_path), document, RunInfo()), path, force=force)
+    write_report(run_data(trace, document, RunInfo()), path, force=force)

@@ -12,7 +12,7 @@ PICK_MISSES = GRAPHS / "scenarios" / "pick_misses.json"
 
 
 def graphflow(*args, cwd=None):
-    return subprocess.run([sys.executable, "-m", "graphflow.cli", *args], capture_output=True, text=True, cwd=cwd)
+    return subprocess.run([sys.executable, "-m", "graphflow", *args], capture_output=True, text=True, cwd=cwd)
 
 
 def _run(folder, graph):

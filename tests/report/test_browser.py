@@ -4,7 +4,7 @@ import math
 
 import pytest
 
-from graphflow.trace import read_trace
+from graphflow.observe.trace import read_trace
 
 from .browser import browser, open_report, show_tick
 

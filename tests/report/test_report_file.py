@@ -2,7 +2,7 @@
 import json
 import re
 
-from graphflow.trace import read_trace
+from graphflow.observe.trace import read_trace
 
 from .conftest import PICK_MISSES, PICK_PLACE, graphflow
 
@@ -46,7 +46,7 @@ def test_wire_values_are_the_trace_values(pick_place_run):
 
 def test_nodes_are_laid_out_as_graphflow_draw_lays_them_out(pick_place_run):
     from graphflow.document import load_document
-    from graphflow.draw import layout
+    from graphflow.observe.draw import layout
 
     picture = layout(load_document(str(PICK_PLACE)))
     nodes = {node["name"]: node for node in embedded(pick_place_run["report"])["graph"]["nodes"]}

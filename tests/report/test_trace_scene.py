@@ -2,7 +2,7 @@
 import json
 import math
 
-from graphflow.trace import read_trace
+from graphflow.observe.trace import read_trace
 
 CUBE = "/World/Cube"
 CUBE_HALF = 0.0515 / 2      # the stage's cube: 5.15 cm a side (NVIDIA's pick-and-place demo)
