@@ -4,7 +4,7 @@ import React, { useEffect, useRef } from "react";
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import { ConvexGeometry } from "three/examples/jsm/geometries/ConvexGeometry.js";
-import { indexAt, valueAt } from "./data.js";
+import { indexAt, poseAt } from "./data.js";
 
 const COLOURS = { static: 0x9aa3ad, kinematic: 0x6d8fd6, dynamic: 0xe09a3e, link: 0xb8c2cc };
 const HELD_COLOUR = 0x2fb36b;
@@ -186,7 +186,7 @@ export default function SceneView({ run, tick, held, onReady }) {
     const current = state.current;
     if (!current) return;
     for (const [path, track] of Object.entries(run.poses)) {
-      const pose = valueAt(track, tick);
+      const pose = poseAt(track, tick);
       if (pose && current.bodies[path]) setPose(current.bodies[path].group, pose);
     }
     for (const [path, body] of Object.entries(current.bodies)) {

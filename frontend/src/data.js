@@ -85,3 +85,19 @@ export function tickAtTime(run, seconds) {
   const index = indexAt(run.times, seconds, (t) => t);
   return Math.min(run.ticks, Math.max(0, index));
 }
+
+/** A body's pose at a tick from its samples ([[tick, [x, y, z, qx, qy, qz, qw]], ...]): between two samples
+ * the position is interpolated linearly and the rotation along the shorter arc (normalised lerp). */
+export function poseAt(track, tick) {
+  const index = indexAt(track, tick);
+  if (index < 0) return undefined;
+  const [start, from] = track[index];
+  if (index + 1 >= track.length || start === tick) return from;
+  const [end, to] = track[index + 1];
+  const f = (tick - start) / (end - start);
+  const sign = from[3] * to[3] + from[4] * to[4] + from[5] * to[5] + from[6] * to[6] < 0 ? -1 : 1;
+  const pose = from.map((value, i) => value + ((i >= 3 ? sign : 1) * to[i] - value) * f);
+  const norm = Math.hypot(pose[3], pose[4], pose[5], pose[6]) || 1;
+  for (let i = 3; i < 7; i += 1) pose[i] /= norm;
+  return pose;
+}

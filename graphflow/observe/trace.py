@@ -144,12 +144,15 @@ class TraceRecorder:
 
     ``TraceRecorder(simulation, stream)`` writes the header and adds itself to the simulation's
     listeners: it collects exec pulses as nodes compute (``on_compute``) and writes each tick after
-    it ran (``on_tick``). The stream stays open: whoever opened it closes it.
+    it ran (``on_tick``). The stream stays open: whoever opened it closes it. *records*, a list, also
+    keeps every record as a dict (the run report reads them so, without encoding JSON every tick);
+    the stream may then be None.
     """
 
-    def __init__(self, simulation, stream: IO[str], *, graph: str | None = None):
+    def __init__(self, simulation, stream: IO[str] | None, *, graph: str | None = None, records: list | None = None):
         self.simulation = simulation
         self.stream = stream
+        self.records = records
         self.instance = simulation.instance
         self._pulses: list[str] = []
         self._outputs: dict[str, Any] = {}
@@ -157,6 +160,7 @@ class TraceRecorder:
         nodes = self.instance.compiled.nodes
         self._exec_names = [frozenset(a.name for a in node.spec.exec_outputs) for node in nodes]
         self._databases = [self.instance.database(node.name) for node in nodes]
+        self._slots: list | None = None
         self._outputs = self._output_values()
         from graphflow.observe.trace_scene import SceneSection
 
@@ -203,15 +207,21 @@ class TraceRecorder:
         if logs:
             record["log"] = logs[::-1]
         record.update(self._scene.record(surface_gripper_manager(self.simulation.world)))
-        self.stream.write(dumps_record(record) + "\n")
+        self._emit(record)
+
+    def _emit(self, record: dict) -> None:
+        if self.records is not None:
+            self.records.append(record)
+        if self.stream is not None:
+            self.stream.write(dumps_record(record) + "\n")
 
     def _output_values(self) -> dict[str, Any]:
-        values = {}
-        for node, database, exec_names in zip(self.instance.compiled.nodes, self._databases, self._exec_names):
-            for name, value in database.outputs.__dict__.items():
-                if name not in exec_names:
-                    values[f"{node.name}.{name}"] = to_json_value(value)
-        return values
+        if self._slots is None:   # (outputs dict, name, "node.name") of every data output, found once
+            self._slots = [(database.outputs.__dict__, name, f"{node.name}.{name}")
+                           for node, database, exec_names in zip(self.instance.compiled.nodes, self._databases,
+                                                                 self._exec_names)
+                           for name in database.outputs.__dict__ if name not in exec_names]
+        return {key: to_json_value(outputs[name]) for outputs, name, key in self._slots}
 
     def _write_header(self, graph: str | None) -> None:
         document = self.simulation.document
@@ -231,7 +241,7 @@ class TraceRecorder:
             "versions": loaded_versions(),
             **self._scene.header(),
         }
-        self.stream.write(dumps_record(header) + "\n")
+        self._emit(header)
 
 
 _MISSING = object()
@@ -241,7 +251,19 @@ def _changed(previous: Any, value: Any) -> bool:
     """Different as written to the trace (so a NaN that stays NaN is no change)."""
     if previous is _MISSING:
         return True
-    return previous != value and dumps_record(previous) != dumps_record(value)
+    return previous != value and not _same_but_nan(previous, value)
+
+
+def _same_but_nan(previous: Any, value: Any) -> bool:
+    """Unequal values that are written alike: NaN where the other has NaN (plain JSON values only)."""
+    if isinstance(previous, float) and isinstance(value, float):
+        return previous != previous and value != value
+    if isinstance(previous, list) and isinstance(value, list):
+        return len(previous) == len(value) and all(a == b or _same_but_nan(a, b) for a, b in zip(previous, value))
+    if isinstance(previous, dict) and isinstance(value, dict):
+        return list(previous) == list(value) and all(
+            previous[key] == value[key] or _same_but_nan(previous[key], value[key]) for key in previous)
+    return False
 
 
 # ---------------------------------------------------------------- reading

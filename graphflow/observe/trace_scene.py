@@ -15,7 +15,7 @@ from typing import Any
 
 from graphflow.poses import AXIS_VECTORS, quat_rotate
 
-POSE_EVERY = 1            # ticks between pose samples (the header's scene.poseEvery)
+POSE_EVERY = 4            # ticks between pose samples (scene.poseEvery): 15 Hz at 60 ticks/s; the page interpolates
 RAY_PROBE = 1.0           # m a recorded ray is followed to find its nearest surface (the gripper's PROBE_RANGE)
 SELF_STEP = 0.001         # m a recorded ray's origin advances past the gripper's own body (as the gripper's loop)
 SELF_STEPS = 200          # give up after this many self hits (20 cm): a ray inside the gripper shows no hit

@@ -3,7 +3,8 @@
 The page looks values up by tick, so every output, gripper field and body pose
 becomes a list of changes ``[[tick, value], ...]`` (tick 0: before the first
 tick). Outputs keep the trace's exact values (the page shows the very number
-the run computed); body poses are rounded to 10 µm and 1e-5 of a quaternion
+the run computed); poses are samples the page interpolates between, so a body
+that rested gets a sample at the last tick it was still at rest; body poses are rounded to 10 µm and 1e-5 of a quaternion
 component, which no one sees on screen and which keeps a long run's report small.
 """
 from __future__ import annotations
@@ -71,6 +72,7 @@ def run_data(trace: Trace, document, info: RunInfo = RunInfo()) -> dict:
     scene = header.get("scene") or {"upAxis": "Z", "poseEvery": None, "bodies": []}
     poses = {body["path"]: [[0, _rounded_pose(body["pose"])]] for body in scene["bodies"] if body["kind"] != "static"}
     pulses, log, rays, limits = [], [], [], {}
+    pose_every = scene.get("poseEvery")
     for record in trace.ticks:
         tick = record["tick"]
         times[tick] = record["t"]
@@ -83,8 +85,11 @@ def run_data(trace: Trace, document, info: RunInfo = RunInfo()) -> dict:
                 series.setdefault(name, []).append([tick, value])
         for path, pose in record.get("poses", {}).items():
             rounded, track = _rounded_pose(pose), poses.setdefault(path, [])
-            if not track or track[-1][1] != rounded:
-                track.append([tick, rounded])
+            if track and track[-1][1] == rounded:
+                continue
+            if track and pose_every and tick - pose_every > track[-1][0]:
+                track.append([tick - pose_every, track[-1][1]])   # it rested until the sample before: no glide
+            track.append([tick, rounded])
         if "pulses" in record:
             pulses.append([tick, record["pulses"]])
         log.extend([tick, line["node"], line["level"], line["message"]] for line in record.get("log", ()))

@@ -1,4 +1,4 @@
-"""Recording a run for its report: the trace kept in memory (and teed to ``--trace``), then the report written.
+"""Recording a run for its report: the trace's records kept in memory (and written to ``--trace``), then the report.
 
 ``graphflow run --report`` and ``graphflow test --reports`` use this; ``graphflow
 report TRACE`` builds the same data from a trace file instead (``from_trace_file``).
@@ -6,8 +6,6 @@ report TRACE`` builds the same data from a trace file instead (``from_trace_file
 from __future__ import annotations
 
 import dataclasses
-import io
-import json
 
 from graphflow.observe.trace import Trace, TraceRecorder, to_json_value
 from graphflow.report.build import RunInfo, run_data
@@ -16,30 +14,17 @@ from graphflow.report.timing import ComputeTimer
 from graphflow.report.verdict import check_entries
 
 
-class _Tee:
-    """A text stream writing to several streams (the report's buffer and the --trace file)."""
-
-    def __init__(self, *streams):
-        self.streams = streams
-
-    def write(self, text: str) -> int:
-        for stream in self.streams:
-            stream.write(text)
-        return len(text)
-
-
 class ReportRecording:
     """Records a simulation's trace in memory for a report; ``write()`` after the run ends."""
 
     def __init__(self, simulation, graph: str, *, also_to=None, timings: bool = False):
-        self.buffer = io.StringIO()
+        self.records: list[dict] = []
         self.simulation = simulation
-        TraceRecorder(simulation, _Tee(self.buffer, also_to) if also_to is not None else self.buffer, graph=graph)
+        TraceRecorder(simulation, also_to, graph=graph, records=self.records)
         self.timer = ComputeTimer(simulation) if timings else None
 
     def trace(self) -> Trace:
-        records = [json.loads(line) for line in self.buffer.getvalue().splitlines()]
-        return Trace(records[0], records[1:])
+        return Trace(self.records[0], self.records[1:])
 
     def write(self, path, document, *, evaluator=None, runtime_failure: str | None = None, seed: int | None = None,
               overrides=(), randomization: dict | None = None, force: bool = False) -> None:
