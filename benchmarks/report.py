@@ -75,6 +75,7 @@ def _page_figures(report: Path) -> dict[str, float] | None:
                                              args=["--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader"])
         try:
             page = browser.new_page(viewport={"width": 1600, "height": 1000})
+            page.goto("about:blank")   # the browser is up, as a person's is when they open the file
             started = time.perf_counter()
             page.goto(report.resolve().as_uri())
             page.wait_for_function("window.graphflowReport !== undefined", timeout=30000, polling=5)

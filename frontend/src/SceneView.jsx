@@ -70,13 +70,13 @@ function buildScene(run) {
     const group = new THREE.Group();
     group.name = body.path;
     const colour = articulated.has(body.path) ? COLOURS.link : COLOURS[body.kind] ?? COLOURS.static;
-    const material = new THREE.MeshStandardMaterial({ color: colour, roughness: 0.7, metalness: 0.05,
+    const material = new THREE.MeshLambertMaterial({ color: colour, 
                                                       side: THREE.DoubleSide });
     for (const shape of body.shapes) {
       const geometry = shapeGeometry(shape);
       if (!geometry) continue;
       const mesh = new THREE.Mesh(geometry, shape.kind === "plane"
-        ? new THREE.MeshStandardMaterial({ color: 0xdfe3e8, roughness: 1 }) : material);
+        ? new THREE.MeshLambertMaterial({ color: 0xdfe3e8 }) : material);
       mesh.name = shape.path;
       setPose(mesh, shape.pose);
       group.add(mesh);
@@ -94,31 +94,42 @@ function buildScene(run) {
   return { scene, bodies, rays };
 }
 
+// Rays are drawn with the bodies' material kind (MeshLambertMaterial, double-sided): no new shader program to
+// compile when the first close is shown (software WebGL takes a second per program).
+function marker(colour) {
+  return new THREE.MeshLambertMaterial({ color: colour, emissive: colour, emissiveIntensity: 0.6, side: THREE.DoubleSide });
+}
+
+function rod(from, to, radius, material) {
+  const length = from.distanceTo(to);
+  const mesh = new THREE.Mesh(new THREE.CylinderGeometry(radius, radius, Math.max(length, 1e-6), 8), material);
+  mesh.position.copy(from).add(to).multiplyScalar(0.5);
+  mesh.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), to.clone().sub(from).normalize());
+  return mesh;
+}
+
+function dot(at, radius, material) {
+  const mesh = new THREE.Mesh(new THREE.SphereGeometry(radius, 12, 8), material);
+  mesh.position.copy(at);
+  return mesh;
+}
+
 function rayObjects(close) {
   const group = new THREE.Group();
+  const reachMaterial = marker(REACH_COLOUR);
+  const beyondMaterial = marker(BEYOND_COLOUR);
   for (const ray of close.rays) {
     if (!ray.origin) continue;
     const origin = new THREE.Vector3(...ray.origin);
     const direction = new THREE.Vector3(...ray.direction);
     const reachEnd = origin.clone().addScaledVector(direction, ray.reach);
-    const point = new THREE.Mesh(new THREE.SphereGeometry(0.004, 12, 8),
-                                 new THREE.MeshBasicMaterial({ color: REACH_COLOUR }));
-    point.position.copy(origin);
-    group.add(point);
-    group.add(new THREE.Line(new THREE.BufferGeometry().setFromPoints([origin, reachEnd]),
-                             new THREE.LineBasicMaterial({ color: REACH_COLOUR, linewidth: 3 })));
+    group.add(dot(origin, 0.004, reachMaterial));
+    group.add(rod(origin, reachEnd, 0.0012, reachMaterial));
     if (ray.hit) {
       const hitPoint = origin.clone().addScaledVector(direction, ray.hit.distance);
-      if (ray.hit.distance > ray.reach) {
-        const beyond = new THREE.Line(new THREE.BufferGeometry().setFromPoints([reachEnd, hitPoint]),
-                                      new THREE.LineDashedMaterial({ color: BEYOND_COLOUR, dashSize: 0.004, gapSize: 0.003 }));
-        beyond.computeLineDistances();
-        group.add(beyond);
-      }
-      const marker = new THREE.Mesh(new THREE.SphereGeometry(0.005, 12, 8),
-                                    new THREE.MeshBasicMaterial({ color: ray.hit.distance > ray.reach ? BEYOND_COLOUR : REACH_COLOUR }));
-      marker.position.copy(hitPoint);
-      group.add(marker);
+      const beyond = ray.hit.distance > ray.reach;
+      if (beyond) group.add(rod(reachEnd, hitPoint, 0.0006, beyondMaterial));
+      group.add(dot(hitPoint, 0.004, beyond ? beyondMaterial : reachMaterial));
     }
   }
   return group;

@@ -161,6 +161,7 @@ class TraceRecorder:
         self._exec_names = [frozenset(a.name for a in node.spec.exec_outputs) for node in nodes]
         self._databases = [self.instance.database(node.name) for node in nodes]
         self._slots: list | None = None
+        self._raw: dict[str, Any] = {}    # each output's value as last seen, to skip converting unchanged ones
         self._outputs = self._output_values()
         from graphflow.observe.trace_scene import SceneSection
 
@@ -181,11 +182,9 @@ class TraceRecorder:
         if self._pulses:
             record["pulses"] = self._pulses
             self._pulses = []
-        outputs = self._output_values()
-        changed = {key: value for key, value in outputs.items() if _changed(self._outputs.get(key, _MISSING), value)}
+        changed = self._changed_outputs()
         if changed:
             record["outputs"] = changed
-        self._outputs = outputs
         grippers = {}
         for path, sample in sample_grippers(self.simulation.world).items():
             fields = sample.fields()
@@ -223,6 +222,20 @@ class TraceRecorder:
                            for name in database.outputs.__dict__ if name not in exec_names]
         return {key: to_json_value(outputs[name]) for outputs, name, key in self._slots}
 
+    def _changed_outputs(self) -> dict[str, Any]:
+        """Outputs whose written value changed; an immutable value equal to the last one is skipped unconverted."""
+        changed, written, raw_values = {}, self._outputs, self._raw
+        for outputs, name, key in self._slots:
+            raw = outputs[name]
+            previous = raw_values.get(key, _MISSING)
+            if type(previous) is type(raw) and _plain(raw) and (previous is raw or previous == raw):
+                continue
+            raw_values[key] = raw
+            value = to_json_value(raw)
+            if _changed(written.get(key, _MISSING), value):
+                changed[key] = written[key] = value
+        return changed
+
     def _write_header(self, graph: str | None) -> None:
         document = self.simulation.document
         world = self.simulation.world
@@ -245,6 +258,12 @@ class TraceRecorder:
 
 
 _MISSING = object()
+_SCALARS = (float, int, str, bool, type(None))
+
+
+def _plain(value: Any) -> bool:
+    """Immutable and compared by value: a scalar, or a tuple of scalars (never a list or an array a node may mutate)."""
+    return type(value) in _SCALARS or (type(value) is tuple and all(type(item) in _SCALARS for item in value))
 
 
 def _changed(previous: Any, value: Any) -> bool:
