@@ -8,7 +8,7 @@ written from that recording (CPU seconds, target under 1 s) and its size measure
 (target under 3 MB), and the same for ur10_pyramid's 6,757 ticks (under 10 MB;
 skipped with --quick). In headless Chromium, when one is installed: wall-clock
 seconds from opening the file until the page is interactive (target under 2 s)
-and the median and worst time of a scrub step, from setting a tick to the
+and the median, 95th percentile and worst time of a scrub step, from setting a tick to the
 panels and scene being drawn for it (target under 50 ms).
 """
 from __future__ import annotations
@@ -94,7 +94,9 @@ def _page_figures(report: Path) -> dict[str, float] | None:
             }""", SCRUB_STEPS)
         finally:
             browser.close()
-    return {"interactive": interactive, "scrub_median": statistics.median(steps), "scrub_worst": max(steps)}
+    ordered = sorted(steps)
+    return {"interactive": interactive, "scrub_median": statistics.median(steps),
+            "scrub_p95": ordered[int(0.95 * (len(ordered) - 1))], "scrub_worst": ordered[-1]}
 
 
 def run(quick: bool = False) -> str:
@@ -116,7 +118,7 @@ def run(quick: bool = False) -> str:
         page = _page_figures(Path(folder) / f"{PICK_PLACE.stem}.html")
     if page is not None:
         figures.update(interactive=f"{page['interactive']:.2f}s", scrub=f"{page['scrub_median']:.1f}ms",
-                       scrub_worst=f"{page['scrub_worst']:.1f}ms")
+                       scrub_p95=f"{page['scrub_p95']:.1f}ms", scrub_worst=f"{page['scrub_worst']:.1f}ms")
     print(f"report: pick-and-place {'60 ticks' if quick else 'whole run'} x {rounds} rounds, recorded "
           f"{statistics.median(samples['recorded']):.2f} s vs plain {statistics.median(samples['plain']):.2f} s CPU "
           f"(targets: ratio <= 1.10, write < 1 s, < 3 MB, pyramid < 10 MB, interactive < 2 s, scrub step < 50 ms)")
