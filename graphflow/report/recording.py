@@ -1,7 +1,7 @@
 """Recording a run for its report: the trace's records kept in memory (and written to ``--trace``), then the report.
 
 ``graphflow run --report`` and ``graphflow test --reports`` use this; ``graphflow
-report TRACE`` builds the same data from a trace file instead (``from_trace_file``).
+report TRACE`` builds the same data from a trace file instead (``from_trace``).
 """
 from __future__ import annotations
 

@@ -108,3 +108,22 @@ def test_graphflow_test_leaves_a_report_for_a_failing_scenario_linked_from_junit
     assert embedded(report)["checks"][0]["passed"] is False
     case = ET.parse(junit).getroot().find(".//testcase[@name='pick_misses.json']")
     assert case.find("properties/property[@name='report']").get("value") == str(report)
+
+
+def test_a_version_1_trace_still_makes_a_report(tmp_path):
+    """A trace from before the scene section: the report shows its graph, values and pulses, and no scene."""
+    counter = PICK_PLACE.parent / "counter_branch_print.json"
+    trace = tmp_path / "new.jsonl"
+    assert graphflow("run", str(counter), "--trace", str(trace)).returncode == 0
+    lines = [json.loads(line) for line in trace.read_text().splitlines()]
+    lines[0]["version"] = 1
+    lines[0].pop("scene", None)
+    for record in lines[1:]:
+        record.pop("computed", None)
+    old = tmp_path / "old.jsonl"
+    old.write_text("".join(json.dumps(record) + "\n" for record in lines))
+    result = graphflow("report", str(old), "-o", str(tmp_path / "old.html"))
+    assert result.returncode == 0, result.stderr
+    data = embedded(tmp_path / "old.html")
+    assert data["header"]["traceVersion"] == 1 and data["scene"]["bodies"] == []
+    assert data["outputs"]["counter.count"][-1] == [3, 3]      # three ticks counted
