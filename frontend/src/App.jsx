@@ -16,7 +16,9 @@ function Header({ run }) {
     ["overrides", header.overrides.length ? header.overrides.join(", ") : "none"],
     ["randomization", Object.keys(header.randomization).length
       ? Object.entries(header.randomization).map(([k, v]) => `${k} = ${JSON.stringify(v)}`).join(", ") : "none"],
-    ["run", `${run.ticks} ticks, ${formatNumber(run.times[run.ticks] ?? 0)} s simulated, poses every ${header.poseEvery ?? "–"} tick(s)`],
+    ["run", `${run.ticks} ticks, ${formatNumber(run.times[run.ticks] ?? 0)} s simulated`
+      + (header.poseEvery ? `, body poses every ${header.poseEvery} tick(s)` : "")
+      + (header.timings ? ", with wall-clock compute times (this file differs from run to run)" : "")],
     ["versions", Object.entries(header.versions).map(([k, v]) => `${k} ${v}`).join(", ")],
   ];
   return (

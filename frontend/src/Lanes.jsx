@@ -117,6 +117,9 @@ export default function Lanes({ run, tick, pinned, onTick, onUnpin }) {
     onTick(Math.round(((event.clientX - box.left) / box.width) * ticks));
   };
   let top = 0;
+  if (lanes.length === 0 && failures.length === 0) {
+    return <div className="gf-lanes gf-none" data-testid="lanes">no lanes: this run has no controller or gripper; pin an output (📌 in a node's panel) to plot it here</div>;
+  }
   return (
     <div className="gf-lanes" data-testid="lanes">
       <div className="gf-lane-labels">

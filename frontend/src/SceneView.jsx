@@ -222,6 +222,7 @@ export default function SceneView({ run, tick, held, onReady }) {
   return (
     <div className="gf-scene-box">
       <div className="gf-scene" ref={mount} data-testid="scene" />
+      {run.scene.bodies.length === 0 && <div className="gf-no-scene">no scene: this run has no stage (or its trace predates scene data)</div>}
       {closeShown && <button className="gf-focus" onClick={focusRays} data-testid="focus-rays">zoom to the gripper's rays</button>}
     </div>
   );
