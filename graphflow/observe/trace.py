@@ -248,7 +248,7 @@ class TraceRecorder:
             "stage": document.settings.get("stage"),
             "timeStep": world.time_step,
             "nodes": {node.name: node.spec.id for node in compiled.nodes},
-            "outputs": self._outputs,
+            "outputs": dict(self._outputs),   # a copy: the recorder updates its own as outputs change
             "phases": phase_outputs(compiled),
             "grippers": initial_grippers(world),
             "versions": loaded_versions(),

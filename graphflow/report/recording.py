@@ -5,8 +5,6 @@ report TRACE`` builds the same data from a trace file instead (``from_trace``).
 """
 from __future__ import annotations
 
-import dataclasses
-
 from graphflow.observe.trace import Trace, TraceRecorder, to_json_value
 from graphflow.report.build import RunInfo, run_data
 from graphflow.report.page import write_report
@@ -46,12 +44,13 @@ def runtime_failure(checked) -> str | None:
 
 
 def drawn_randomization(edits) -> dict:
-    """Each drawn edit (graphflow.randomize) by its label: a value, or a pose jitter's offset and yaw."""
+    """Each drawn edit (graphflow.variants.randomize): a target's value, or a prim's pose jitter (offset, yaw)."""
     drawn = {}
     for edit in edits:
-        fields = {key: value for key, value in dataclasses.asdict(edit).items() if key not in ("origin", "text")}
-        value = fields["value"] if "value" in fields else {k: v for k, v in fields.items() if k != "prim"}
-        drawn[edit.label()] = to_json_value(value)
+        if hasattr(edit, "target"):
+            drawn[edit.target] = to_json_value(edit.value)
+        else:
+            drawn[f"pose of {edit.prim}"] = {"offset": to_json_value(edit.offset), "yawDegrees": edit.yaw_degrees}
     return drawn
 
 

@@ -39,6 +39,7 @@ def open_report(chromium, path, size=(1600, 1000)):
     page.on("pageerror", lambda error: errors.append(str(error)))
     page.goto(path.resolve().as_uri())
     page.wait_for_function("window.graphflowReport !== undefined", timeout=30000)
+    page.wait_for_selector(".react-flow__edge", timeout=30000)   # React Flow draws edges once it measured the nodes
     assert not errors, errors
     return page
 

@@ -38,6 +38,7 @@ def test_the_picking_position_wire_shows_the_traced_value_at_tick_500(chromium, 
     page = open_report(chromium, pick_place_run["report"])
     show_tick(page, 500)
     label = page.locator('[data-wire="cube_pose.position"]')
+    label.wait_for()
     assert label.count() == 1
     expected = trace_value(read_trace(pick_place_run["trace"]), "cube_pose.position", 500)
     assert json.loads(label.get_attribute("data-value")) == expected

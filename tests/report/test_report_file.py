@@ -127,3 +127,17 @@ def test_a_version_1_trace_still_makes_a_report(tmp_path):
     data = embedded(tmp_path / "old.html")
     assert data["header"]["traceVersion"] == 1 and data["scene"]["bodies"] == []
     assert data["outputs"]["counter.count"][-1] == [3, 3]      # three ticks counted
+
+
+def test_the_header_names_seed_overrides_and_drawn_randomization(tmp_path):
+    counter = PICK_PLACE.parent / "counter_branch_print.json"
+    randomization = tmp_path / "random.json"
+    randomization.write_text(json.dumps({"randomize": [{"set": "at_least_three.b", "choice": [5, 6]}]}))
+    report = tmp_path / "r.html"
+    result = graphflow("run", str(counter), "--seed", "7", "--set", "format_count.format=n = {value}",
+                       "--randomize", str(randomization), "--report", str(report))
+    assert result.returncode in (0, 1), result.stderr
+    header = embedded(report)["header"]
+    assert header["seed"] == 7
+    assert header["overrides"] == ["format_count.format=n = {value}"]
+    assert header["randomization"] in ({"at_least_three.b": 5}, {"at_least_three.b": 6})
