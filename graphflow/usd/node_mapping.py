@@ -14,8 +14,10 @@
   they are gathered into graphflow's ``messageFields`` JSON.
 * Target prims must exist in the composed stage: when one does not because a
   referenced or payloaded layer could not be opened (an online NVIDIA asset,
-  an author's local file), the import fails with a line naming the prim and
-  that layer; a target no layer defines is a warning line.
+  an author's local file), the input is kept with a line naming the prim and
+  that layer, and recorded in ``settings.missingAssets`` (validate reports it,
+  run fails at the node's first compute); a target no layer defines is a
+  warning line.
 """
 from __future__ import annotations
 
@@ -127,12 +129,12 @@ def gather_message_fields(fields: dict, where: str, notes: list[str]) -> str:
 
 
 def missing_target(stage, target: str) -> tuple[str, bool] | None:
-    """Why *target* cannot be used and whether that fails the import, or None when it is fine.
+    """Why *target* cannot be used and whether its layer is missing, or None when it is fine.
 
     A target under a reference or payload that cannot be opened (an online
-    asset, an author's local file) fails, naming that layer: the robot is not
-    there to run against. A prim may exist only as an ``over`` its author kept
-    while that layer is absent, which fails the same way. A target no layer
+    asset, an author's local file) is missing, naming that layer: the robot is
+    not there to run against. A prim may exist only as an ``over`` its author
+    kept while that layer is absent, which is missing the same way. A target no layer
     defines (a script adds it at run time, as Isaac's gantry sample does) is a
     warning: the user can add it with a stage that sublayers the file.
     """
