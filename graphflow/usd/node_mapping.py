@@ -25,16 +25,34 @@ import json
 import math
 
 RENDER_PRODUCT = "needs Kit's RTX renderer (render products do not exist headless)"
-RENDERING_NODES = {
-    "isaacsim.core.nodes.IsaacCreateRenderProduct": RENDER_PRODUCT,
-    "omni.isaac.core_nodes.IsaacCreateRenderProduct": RENDER_PRODUCT,
-    "isaacsim.ros2.bridge.ROS2CameraHelper": "publishes rendered camera images (needs Kit's renderer)",
-    "omni.isaac.ros2_bridge.ROS2CameraHelper": "publishes rendered camera images (needs Kit's renderer)",
-    "isaacsim.ros2.bridge.ROS2CameraInfoHelper": "publishes a render product's camera info (needs Kit's renderer)",
-    "omni.isaac.ros2_bridge.ROS2CameraInfoHelper": "publishes a render product's camera info (needs Kit's renderer)",
-    "isaacsim.ros2.bridge.ROS2RtxLidarHelper": "publishes RTX lidar scans (ray-traced by Kit's renderer)",
-    "omni.isaac.ros2_bridge.ROS2RtxLidarHelper": "publishes RTX lidar scans (ray-traced by Kit's renderer)",
+RENDERED_IMAGE = "processes rendered images (needs Kit's renderer)"
+VIEWPORT = "drives a Kit viewport window (no GUI headless)"
+RTX_SENSOR = "reads an RTX sensor (ray-traced by Kit's renderer)"
+# the library prefixes each node type was published under: Isaac Sim 5.x and the 4.x omni.isaac ids
+_CORE, _ROS2 = ("isaacsim.core.nodes", "omni.isaac.core_nodes"), ("isaacsim.ros2.bridge", "omni.isaac.ros2_bridge")
+_RTX = ("isaacsim.sensors.rtx", "omni.isaac.sensor")
+_RENDERING = {
+    _CORE: {"IsaacCreateRenderProduct": RENDER_PRODUCT, "IsaacGetViewportRenderProduct": RENDER_PRODUCT,
+            "IsaacSetCameraOnRenderProduct": RENDER_PRODUCT, "IsaacCreateViewport": VIEWPORT,
+            "IsaacSetViewportResolution": VIEWPORT, "IsaacAttachHydraTexture": VIEWPORT,
+            "IsaacConvertDepthToPointCloud": RENDERED_IMAGE, "IsaacConvertRGBAToRGB": RENDERED_IMAGE,
+            "IsaacGenerate32FC1": RENDERED_IMAGE, "IsaacGenerateRGBA": RENDERED_IMAGE,
+            "IsaacPassthroughImagePtr": RENDERED_IMAGE, "IsaacReadCameraInfo": RENDER_PRODUCT,
+            "IsaacReadSimulationTimeAnnotator": RENDER_PRODUCT, "IsaacReadSystemTimeAnnotator": RENDER_PRODUCT},
+    _ROS2: {"ROS2CameraHelper": "publishes rendered camera images (needs Kit's renderer)",
+            "ROS2CameraInfoHelper": "publishes a render product's camera info (needs Kit's renderer)",
+            "ROS2RtxLidarHelper": "publishes RTX lidar scans (ray-traced by Kit's renderer)",
+            "ROS2RtxLidarPointCloudConfig": RTX_SENSOR, "ROS2RtxRadarHelper": RTX_SENSOR,
+            "ROS2PublishImage": RENDERED_IMAGE, "ROS2PublishCompressedImage": RENDERED_IMAGE,
+            "ROS2PublishCameraInfo": RENDER_PRODUCT, "ROS2PublishBbox2D": RENDERED_IMAGE,
+            "ROS2PublishBbox3D": RENDERED_IMAGE, "ROS2PublishSemanticLabels": RENDERED_IMAGE,
+            "ROS2PublishObjectIdMap": RENDERED_IMAGE, "ROS2PublishPointCloud": RTX_SENSOR,
+            "ROS2PublishLaserScan": RTX_SENSOR},
+    _RTX: {"IsaacExtractRTXSensorPointCloud": RTX_SENSOR, "IsaacComputeRTXLidarFlatScan": RTX_SENSOR,
+           "IsaacCreateRTXLidarScanBuffer": RTX_SENSOR, "IsaacReadRTXLidarData": RTX_SENSOR},
 }
+RENDERING_NODES = {f"{prefix}.{name}": reason for prefixes, names in _RENDERING.items()
+                   for prefix in prefixes for name, reason in names.items()}
 
 SURFACE_GRIPPER_IDS = ("isaacsim.robot.surface_gripper.SurfaceGripper", "omni.isaac.surface_gripper.SurfaceGripper")
 LEGACY_GRIPPER_ID = "graphflow.LegacySurfaceGripper"
