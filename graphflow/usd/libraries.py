@@ -15,7 +15,6 @@ from dataclasses import dataclass
 from .node_mapping import RENDERING_NODES
 
 NEEDS_EFFORT = "needs measured joint efforts, which graphflow's world does not report yet"
-NEEDS_QP = "Isaac solves a quadratic program (OSQP) for the wheel speeds; not carried over yet"
 NOT_YET = "not carried over yet"
 HOST = "reads the host machine (environment, files, wall clock): not reproducible, so not carried over"
 SERVICES = "ROS 2 services (request/response) are not on graphflow's topic bus yet"
@@ -37,14 +36,14 @@ def _ids(prefix: str, names: dict[str, str | None]) -> dict[str, str | None]:
 
 LIBRARIES: dict[str, dict[str, str | None]] = {
     "omni.graph.action": _ids("omni.graph.action", {
-        "AddPrimRelationship": PRIM_EDIT, "Branch": None, "Countdown": NOT_YET, "Counter": None, "Delay": None,
+        "AddPrimRelationship": PRIM_EDIT, "Branch": None, "Countdown": None, "Counter": None, "Delay": None,
         "ExitApplication": EVENTS, "FlipFlop": None, "ForEach": None, "ForLoop": None, "Gate": None,
         "Multigate": NOT_YET, "Multisequence": None, "OnClosing": EVENTS, "OnCustomEvent": EVENTS,
-        "OnGamepadInput": None, "OnImpulseEvent": None, "OnKeyboardInput": None, "OnLoaded": NOT_YET,
+        "OnGamepadInput": None, "OnImpulseEvent": None, "OnKeyboardInput": None, "OnLoaded": None,
         "OnMessageBusEvent": EVENTS, "OnMouseInput": "needs Kit's viewport mouse (no GUI headless)",
-        "OnObjectChange": NOT_YET, "OnPlaybackTick": None, "OnStageEvent": NOT_YET, "OnTick": None,
+        "OnObjectChange": NOT_YET, "OnPlaybackTick": None, "OnStageEvent": None, "OnTick": None,
         "OnVariableChange": NOT_YET, "Once": None, "RationalTimeSyncGate": NOT_YET, "SendCustomEvent": EVENTS,
-        "SendMessageBusEvent": EVENTS, "Sequence": None, "SetPrimActive": PRIM_EDIT, "SwitchToken": NOT_YET,
+        "SendMessageBusEvent": EVENTS, "Sequence": None, "SetPrimActive": PRIM_EDIT, "SwitchToken": None,
         "SyncGate": NOT_YET}),
     "omni.graph.nodes": _ids("omni.graph.nodes", {
         "Add": None, "ArrayGetSize": None, "ArrayIndex": None, "BooleanAnd": None, "BooleanNot": None,
@@ -85,8 +84,8 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ROS2SubscribeClock": NOT_YET, "ROS2SubscribeJointState": None, "ROS2SubscribeTransformTree": NOT_YET,
         "ROS2SubscribeTwist": None, "ROS2Subscriber": None}),
     "isaacsim.robot.wheeled_robots": _ids(_WHEELED, {
-        "AckermannController": None, "CheckGoal2D": NOT_YET, "DifferentialController": None,
-        "HolonomicController": NEEDS_QP, "HolonomicRobotUsdSetup": EDITOR, "QuinticPathPlanner": NOT_YET,
+        "AckermannController": None, "CheckGoal2D": NOT_YET, "DifferentialController": None, "HolonomicController": None,
+        "HolonomicRobotUsdSetup": EDITOR, "QuinticPathPlanner": NOT_YET,
         "StanleyControlPID": NOT_YET}),
     "isaacsim.sensors.physics": _ids(_SENSORS, {
         "IsaacReadContactSensor": None, "IsaacReadEffortSensor": NEEDS_EFFORT, "IsaacReadIMU": None,

@@ -107,3 +107,44 @@ def test_read_world_pose_reads_the_world():
     world = DrivingWorld(0.5)
     outputs = NodeHarness("isaacsim.core.nodes.IsaacReadWorldPose", {"prim": ["/World/robot"]}, world=world).compute().outputs
     assert outputs["translation"] == (1.0, 2.0, 0.0) and outputs["scale"] == (1.0, 1.0, 1.0)
+
+
+HOLONOMIC = "isaacsim.robot.wheeled_robots.HolonomicController"
+MECANUM = {"wheelRadius": [0.05], "mecanumAngles": [45.0, -45.0, -45.0, 45.0],
+           "wheelPositions": [[0.2, 0.15, 0.0], [0.2, -0.15, 0.0], [-0.2, 0.15, 0.0], [-0.2, -0.15, 0.0]],
+           "wheelOrientations": [[1.0, 0.0, 0.0, 0.0]] * 4}
+
+
+def _wheel_rows(radius=0.05):
+    """Each wheel's velocity direction (its x axis turned by its roller angle) times r, and its yaw moment."""
+    rows = []
+    for (x, y, _), angle in zip(MECANUM["wheelPositions"], MECANUM["mecanumAngles"]):
+        dx, dy = math.cos(math.radians(angle)) * radius, math.sin(math.radians(angle)) * radius
+        rows.append((dx, dy, dx * y - dy * x))
+    return rows
+
+
+@pytest.mark.parametrize("command", [(0.4, 0.0, 0.0), (0.0, 0.3, 0.0), (0.2, -0.1, 0.8)])
+def test_holonomic_wheel_speeds_satisfy_the_programs_optimality_conditions(command):
+    speeds = NodeHarness(HOLONOMIC, {**MECANUM, "inputVelocity": list(command)}).compute("execIn").outputs[
+        "jointVelocityCommand"]
+    rows = _wheel_rows()
+    # feasibility: the wheels produce the command
+    produced = [sum(row[k] * s for row, s in zip(rows, speeds)) for k in range(3)]
+    assert produced == pytest.approx(list(command), abs=1e-12)
+    # optimality (equal radii: plain least norm): the speeds lie in the span of the three constraint rows
+    import numpy as np
+
+    a = np.array(rows).T
+    multipliers, *_ = np.linalg.lstsq(a.T, np.array(speeds), rcond=None)
+    assert a.T @ multipliers == pytest.approx(np.array(speeds), abs=1e-12)
+
+
+def test_holonomic_limits_scale_the_wheels_together():
+    fast = NodeHarness(HOLONOMIC, {**MECANUM, "inputVelocity": [1.0, 0.0, 0.0], "maxWheelSpeed": 5.0}).compute("execIn")
+    speeds = fast.outputs["jointVelocityCommand"]
+    assert max(abs(s) for s in speeds) == pytest.approx(5.0)
+    still = NodeHarness(HOLONOMIC, {**MECANUM}).compute("execIn").outputs["jointVelocityCommand"]
+    assert still == (0.0, 0.0, 0.0, 0.0)
+    with pytest.raises(GraphRuntimeError, match="mecanumAngles needs one entry per wheel"):
+        NodeHarness(HOLONOMIC, {**MECANUM, "mecanumAngles": [45.0, 45.0]}).compute("execIn")
