@@ -5,6 +5,8 @@ user would (import -> validate -> run).
 """
 import json
 
+import pytest
+
 from graphflow.cli import main
 
 MISSING_ROBOT = '''#usda 1.0
@@ -219,3 +221,54 @@ def test_a_file_with_several_graphs_imports_each_with_its_own_names(tmp_path, ca
     assert defaults == {"Graph_Speed": 0.75, "Other_Speed": 2.0}
     # both graphs run: each asserts its own variable's default
     assert main(["run", str(graph), "--ticks", "3"]) == 0, capsys.readouterr().err
+
+
+ISAAC_4X = '''#usda 1.0
+def OmniGraph "Graph"
+{
+    custom double graph:variable:Speed = 0.5
+    def OmniGraphNode "tick"
+    {
+        token node:type = "omni.graph.action.OnPlaybackTick"
+        int node:typeVersion = 1
+    }
+    def OmniGraphNode "speed"
+    {
+        token node:type = "omni.graph.core.ReadVariable"
+        int node:typeVersion = 1
+        custom token inputs:variableName = "Speed"
+    }
+    def OmniGraphNode "to_meters"
+    {
+        token node:type = "omni.isaac.core_nodes.OgnIsaacScaleToFromStageUnit"
+        int node:typeVersion = 1
+        custom token inputs:conversion = "Convert to meters"
+        prepend token inputs:value.connect = </Graph/speed.outputs:value>
+    }
+    def OmniGraphNode "drive"
+    {
+        token node:type = "omni.isaac.wheeled_robots.DifferentialController"
+        int node:typeVersion = 1
+        custom double inputs:angularVelocity = 0.2
+        custom double inputs:wheelRadius = 0.1
+        custom double inputs:wheelDistance = 0.4
+        prepend uint inputs:execIn.connect = </Graph/tick.outputs:tick>
+        prepend double inputs:linearVelocity.connect = </Graph/to_meters.outputs:result>
+    }
+}
+'''
+
+
+def test_a_graph_of_isaac_4x_ids_and_old_versions_imports_and_runs(tmp_path, capsys):
+    from graphflow.document import load_document
+    from graphflow.testing import GraphHarness
+
+    code, graph, err = _import(tmp_path, ISAAC_4X, capsys)
+    assert code == 0, err
+    assert "typeVersion 1 of omni.graph.action.OnPlaybackTick is older than graphflow's 2" in err
+    harness = GraphHarness(load_document(graph))
+    harness.run(3)
+    # the stage has no metersPerUnit: USD's fallback is centimetres, so 0.5 stage units are 0.005 m;
+    # wheels (v -/+ w d / 2) / r
+    v = 0.5 * 0.01
+    assert harness.output("drive", "velocityCommand") == pytest.approx(((v - 0.04) / 0.1, (v + 0.04) / 0.1))
