@@ -52,3 +52,45 @@ def test_make_and_break_vector4_round_trip_a_quaternion():
 def test_constants_output_their_value(type_id, value):
     authored = list(value) if isinstance(value, tuple) else value
     assert NodeHarness(type_id, {"value": authored}).compute().outputs["value"] == value
+
+
+def _scene_world():
+    from pxr import Sdf, Usd, UsdGeom
+
+    from graphflow.testing import ClockWorld
+
+    stage = Usd.Stage.CreateInMemory()
+    for path in ("/World", "/World/Cube0", "/World/Cube1", "/World/Box", "/World/Box/Cube2"):
+        UsdGeom.Xform.Define(stage, path) if "Cube" not in path else UsdGeom.Cube.Define(stage, path)
+    stage.DefinePrim("/World/Graph", "OmniGraph")
+    stage.GetPrimAtPath("/World/Cube1").CreateRelationship("physics:body0").SetTargets([Sdf.Path("/World/Box")])
+    world = ClockWorld(0.1)
+    world.stage = stage
+    return world
+
+
+def test_find_prims_filters_as_the_references_wildcard_examples():
+    world = _scene_world()
+
+    def found(**inputs):
+        return NodeHarness("omni.graph.nodes.FindPrims", {"rootPrimPath": "/World", **inputs},
+                           world=world).compute().outputs["primPaths"]
+    assert found() == ("/World/Cube0", "/World/Cube1", "/World/Box", "/World/Graph")
+    # the reference's examples: '* ^/Box' all but the box, '* ^/Cube*' all but the cubes
+    assert found(pathPattern="* ^/World/Box") == ("/World/Cube0", "/World/Cube1", "/World/Graph")
+    assert found(pathPattern="* ^/World/Cube*") == ("/World/Box", "/World/Graph")
+    assert found(recursive=True, type="Cube") == ("/World/Cube0", "/World/Cube1", "/World/Box/Cube2")
+    assert found(namePrefix="Cube", requiredRelationship="physics:body0",
+                 requiredRelationshipTarget="/World/Box") == ("/World/Cube1",)
+    assert found(ignoreSystemPrims=True, type="* ^Cube") == ("/World/Box",)
+    with pytest.raises(GraphRuntimeError, match="names no stage"):
+        NodeHarness("omni.graph.nodes.FindPrims").compute()
+
+
+def test_prim_paths_and_prims_convert_both_ways():
+    paths = NodeHarness("omni.graph.nodes.GetPrimPaths", {"prims": ["/World/a", "/World/b"]}).compute()
+    assert paths.outputs["primPaths"] == ("/World/a", "/World/b")
+    prims = NodeHarness("omni.graph.nodes.GetPrimsAtPath", {"path": "/World/a"}).compute()
+    assert prims.outputs["prims"] == ("/World/a",)
+    with pytest.raises(GraphRuntimeError, match="absolute prim paths"):
+        NodeHarness("omni.graph.nodes.GetPrimsAtPath", {"path": "World"}).compute()
