@@ -3,8 +3,8 @@
 Each target prim is one transform from the parent frame (parentPrim, or World
 when none) to the prim; an articulation stands for all its links, each from
 the link it hangs on (see _tf). When parentFrames is given (the arrays of
-IsaacComputeTransformTree), those transforms are published as they are.
-Translations are in metres (graphflow's world is SI).
+IsaacComputeTransformTree), those transforms are published, their
+translations turned from stage units into metres.
 """
 from graphflow.spec import Attribute, NodeSpec
 from graphflow.types import ExecState
@@ -12,6 +12,7 @@ from graphflow.world import WorldError
 
 from ._ros2 import common_inputs, header, publish, quaternion, vector
 from ._tf import frame_name, frames, transform
+from .scale_to_from_stage_unit import meters_per_unit
 
 SPEC = NodeSpec(
     id="isaacsim.ros2.bridge.ROS2PublishTransformTree",
@@ -31,7 +32,7 @@ SPEC = NodeSpec(
                   description="Publish as static transforms (a latched topic in ROS; the bus keeps the latest)"),
         Attribute("parentFrames", "token[]", description="Parent frame names (from IsaacComputeTransformTree)"),
         Attribute("childFrames", "token[]", description="Child frame names, one per parent frame"),
-        Attribute("translations", "double[3][]", description="Translations, m, one per parent frame"),
+        Attribute("translations", "double[3][]", description="Translations, stage units, one per parent frame"),
         Attribute("orientations", "double[4][]", description="Rotations (x, y, z, w), one per parent frame"),
     ),
 )
@@ -46,7 +47,8 @@ def compute(db):
         arrays = (inputs.childFrames, inputs.translations, inputs.orientations)
         if any(len(array) != len(inputs.parentFrames) for array in arrays):
             db.error("inputs:parentFrames, childFrames, translations and orientations must have one entry each")
-        transforms = [_stamped(stamp, parent, child, (position, rotation))
+        units = meters_per_unit(db.world)
+        transforms = [_stamped(stamp, parent, child, (tuple(c * units for c in position), rotation))
                       for parent, child, position, rotation in zip(inputs.parentFrames, *arrays)]
     else:
         if not inputs.targetPrims:

@@ -41,6 +41,8 @@ STAGE_INPUTS = {
     "isaacsim.core.nodes.IsaacReadWorldPose": {"prim": CUBE},
     "isaacsim.ros2.bridge.ROS2PublishTransformTree": {"targetPrims": [UR10, CUBE]},
     "omni.graph.nodes.FindPrims": {"rootPrim": "/World", "type": "Cube"},
+    "isaacsim.core.nodes.IsaacComputeTransformTree": {"targetPrims": [UR10, CUBE]},
+    "isaacsim.core.nodes.IsaacArticulationState": {"targetPrim": UR10, "jointNames": ["elbow_joint"]},
 }
 
 TYPES = default_registry().types()

@@ -59,8 +59,8 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "RotateVector": None, "Subtract": None, "ToDouble": None, "ToString": None, "ToToken": None,
         "WritePrimAttribute": None}),
     "isaacsim.core.nodes": _ids(_ISAAC_CORE, {
-        "IsaacArticulationController": None, "IsaacArticulationState": NOT_YET,
-        "IsaacAttachHydraTexture": None, "IsaacComputeOdometry": None, "IsaacComputeTransformTree": NOT_YET,
+        "IsaacArticulationController": None, "IsaacArticulationState": None,
+        "IsaacAttachHydraTexture": None, "IsaacComputeOdometry": None, "IsaacComputeTransformTree": None,
         "IsaacConvertDepthToPointCloud": None, "IsaacConvertRGBAToRGB": None, "IsaacCreateRenderProduct": None,
         "IsaacCreateViewport": None, "IsaacGenerate32FC1": None, "IsaacGenerateRGBA": None,
         "IsaacGetViewportRenderProduct": None, "IsaacJointNameResolver": NOT_YET,
@@ -79,13 +79,13 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ROS2PublishImu": None, "ROS2PublishJointState": None, "ROS2PublishLaserScan": None,
         "ROS2PublishObjectIdMap": None, "ROS2PublishOdometry": None, "ROS2PublishPointCloud": None,
         "ROS2PublishRawTransformTree": None, "ROS2PublishSemanticLabels": None, "ROS2PublishTransformTree": None,
-        "ROS2Publisher": None, "ROS2QoSProfile": NOT_YET, "ROS2RtxLidarHelper": None,
+        "ROS2Publisher": None, "ROS2QoSProfile": None, "ROS2RtxLidarHelper": None,
         "ROS2RtxLidarPointCloudConfig": None, "ROS2RtxRadarHelper": None, "ROS2ServicePrim": SERVICES,
         "ROS2SubscribeAckermannDrive": "ackermann_msgs is not among the standard message types",
-        "ROS2SubscribeClock": NOT_YET, "ROS2SubscribeJointState": None, "ROS2SubscribeTransformTree": NOT_YET,
+        "ROS2SubscribeClock": None, "ROS2SubscribeJointState": None, "ROS2SubscribeTransformTree": NOT_YET,
         "ROS2SubscribeTwist": None, "ROS2Subscriber": None}),
     "isaacsim.robot.wheeled_robots": _ids(_WHEELED, {
-        "AckermannController": None, "CheckGoal2D": NOT_YET, "DifferentialController": None, "HolonomicController": None,
+        "AckermannController": None, "CheckGoal2D": None, "DifferentialController": None, "HolonomicController": None,
         "HolonomicRobotUsdSetup": EDITOR, "QuinticPathPlanner": NOT_YET,
         "StanleyControlPID": NOT_YET}),
     "isaacsim.sensors.physics": _ids(_SENSORS, {

@@ -148,3 +148,31 @@ def test_holonomic_limits_scale_the_wheels_together():
     assert still == (0.0, 0.0, 0.0, 0.0)
     with pytest.raises(GraphRuntimeError, match="mecanumAngles needs one entry per wheel"):
         NodeHarness(HOLONOMIC, {**MECANUM, "mecanumAngles": [45.0, 45.0]}).compute("execIn")
+
+
+def test_articulation_state_reads_the_chosen_joints():
+    from .fakes import FakeArticulationWorld
+
+    world = FakeArticulationWorld({"/World/arm": ("shoulder", "elbow", "wrist")})
+    world.positions["/World/arm"] = [0.1, 0.2, 0.3]
+    world.joint_velocities = lambda path: (1.0, 2.0, 3.0)
+    by_name = NodeHarness("isaacsim.core.nodes.IsaacArticulationState",
+                          {"robotPath": "/World/arm", "jointNames": ["wrist", "shoulder"]}, world=world).compute("execIn")
+    assert by_name.outputs["jointNames"] == ("wrist", "shoulder")
+    assert by_name.outputs["jointPositions"] == (0.3, 0.1) and by_name.outputs["jointVelocities"] == (3.0, 1.0)
+    by_index = NodeHarness("isaacsim.core.nodes.IsaacArticulationState",
+                           {"targetPrim": ["/World/arm"], "jointIndices": [1]}, world=world).compute("execIn")
+    assert by_index.outputs["jointNames"] == ("elbow",)
+    with pytest.raises(GraphRuntimeError, match="has no joint knee"):
+        NodeHarness("isaacsim.core.nodes.IsaacArticulationState",
+                    {"robotPath": "/World/arm", "jointNames": ["knee"]}, world=world).compute("execIn")
+
+
+def test_check_goal_2d_tests_distance_and_yaw_as_isaac():
+    yaw_30 = quat_from_axis_angle((0.0, 0.0, 1.0), math.radians(30))
+    node = NodeHarness("isaacsim.robot.wheeled_robots.CheckGoal2D",
+                       {"target": [1.0, 1.0, 0.0], "targetChanged": True, "currentPosition": [1.06, 0.92, 0.0],
+                        "currentOrientation": list(yaw_30), "thresholds": [0.1, 0.6]})
+    assert node.compute("execIn").outputs["reachedGoal"] == (True, True)    # 0.1 m away, yaw 0.52 <= 0.6
+    node.set_inputs(targetChanged=False, target=[5.0, 5.0, 0.0], thresholds=[0.05, 0.5])
+    assert node.compute("execIn").outputs["reachedGoal"] == (False, False)  # still the first target; 0.1 > 0.05

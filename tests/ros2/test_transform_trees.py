@@ -74,3 +74,39 @@ def test_a_parent_prim_frames_the_poses_and_given_arrays_pass_through():
                          "orientations": [[0.0, 0.0, 0.0, 1.0]]})
     given.compute("execIn")
     assert _transforms(given.world)[("map", "odom")]["translation"]["x"] == 1.0
+
+
+def test_compute_transform_tree_gives_stage_units_and_publish_turns_them_into_metres():
+    from pxr import UsdGeom
+
+    world = _two_link_robot()
+    UsdGeom.SetStageMetersPerUnit(world.stage, 0.01)
+    tree = NodeHarness("isaacsim.core.nodes.IsaacComputeTransformTree", {"targetPrims": ["/Robot"]}, world=world)
+    outputs = tree.compute("execIn").outputs
+    assert outputs["parentFrames"] == ("World", "base") and outputs["childFrames"] == ("base", "arm")
+    assert outputs["translations"][1] == pytest.approx((100.0, 0.0, 50.0), abs=1e-9)   # 1 m, 0.5 m in centimetres
+    publish = NodeHarness(BRIDGE + "ROS2PublishTransformTree", {
+        "parentFrames": list(outputs["parentFrames"]), "childFrames": list(outputs["childFrames"]),
+        "translations": [list(t) for t in outputs["translations"]],
+        "orientations": [list(q) for q in outputs["orientations"]]}, world=world)
+    publish.compute("execIn")
+    arm = _transforms(world)[("base", "arm")]
+    assert [arm["translation"][a] for a in "xyz"] == pytest.approx([1.0, 0.0, 0.5], abs=1e-9)
+
+
+def test_clock_subscriber_and_qos_profile():
+    import json
+
+    from graphflow.ros2.timeline import ScriptedMessage, ScriptedTopics
+
+    node = NodeHarness(BRIDGE + "ROS2SubscribeClock")
+    topic_bus_for(node.world).add_transport(ScriptedTopics([
+        ScriptedMessage("/clock", 0.0, {"clock": {"sec": 12, "nanosec": 500_000_000}})]))
+    node.tick()
+    result = node.compute("execIn")
+    assert result.fired == {"execOut"} and result.outputs["timeStamp"] == 12.5
+    assert node.compute("execIn").fired == set()     # each message once
+    qos = NodeHarness(BRIDGE + "ROS2QoSProfile", {"depth": 5, "reliability": "bestEffort"}).compute()
+    assert json.loads(qos.outputs["qosProfile"]) == {
+        "history": "keepLast", "depth": 5, "reliability": "bestEffort", "durability": "volatile", "deadline": 0.0,
+        "lifespan": 0.0, "liveliness": "systemDefault", "leaseDuration": 0.0}
