@@ -15,7 +15,8 @@
 from __future__ import annotations
 
 VARIABLE_PREFIX = "graph:variable:"
-VARIABLE_NODES = ("omni.graph.core.ReadVariable", "omni.graph.core.WriteVariable")
+VARIABLE_NODES = ("omni.graph.core.ReadVariable", "omni.graph.core.WriteVariable",
+                  "omni.graph.action.OnVariableChange")
 
 # USD value type name -> graphflow type name (graphflow.types)
 _ROLES = {"vector": "vector", "point": "point", "normal": "normal", "color": "color", "texCoord": ""}

@@ -42,7 +42,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "OnGamepadInput": None, "OnImpulseEvent": None, "OnKeyboardInput": None, "OnLoaded": None,
         "OnMessageBusEvent": EVENTS, "OnMouseInput": "needs Kit's viewport mouse (no GUI headless)",
         "OnObjectChange": NOT_YET, "OnPlaybackTick": None, "OnStageEvent": None, "OnTick": None,
-        "OnVariableChange": NOT_YET, "Once": None, "RationalTimeSyncGate": NOT_YET, "SendCustomEvent": EVENTS,
+        "OnVariableChange": None, "Once": None, "RationalTimeSyncGate": NOT_YET, "SendCustomEvent": EVENTS,
         "SendMessageBusEvent": EVENTS, "Sequence": None, "SetPrimActive": PRIM_EDIT, "SwitchToken": None,
         "SyncGate": NOT_YET}),
     "omni.graph.nodes": _ids("omni.graph.nodes", {
@@ -55,7 +55,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ConstantUInt64": None, "ConstantVector3d": None, "ConstructArray": None, "Divide": None,
         "FindPrims": None, "GetPrimPaths": None, "GetPrimsAtPath": None, "Increment": None, "MakeVector3": None,
         "MakeVector4": None, "Maximum": None, "Minimum": None, "Modulo": None, "Multiply": None,
-        "ReadGamepadState": None, "ReadKeyboardState": NOT_YET, "ReadPrim": BUNDLES, "ReadPrimAttribute": None,
+        "ReadGamepadState": None, "ReadKeyboardState": None, "ReadPrim": BUNDLES, "ReadPrimAttribute": None,
         "RotateVector": None, "Subtract": None, "ToDouble": None, "ToString": None, "ToToken": None,
         "WritePrimAttribute": None}),
     "isaacsim.core.nodes": _ids(_ISAAC_CORE, {

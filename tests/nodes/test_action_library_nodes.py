@@ -43,3 +43,24 @@ def test_start_play_stage_events_fire_once_on_the_first_tick_and_editor_events_n
     assert [loaded.tick().fired for _ in range(2)] == [{"execOut"}, set()]
     loaded.reset()
     assert loaded.tick().fired == {"execOut"}
+
+
+def test_on_variable_change_fires_the_tick_after_a_write_changes_the_value():
+    graph = _graph(
+        {"name": "watch", "type": "omni.graph.action.OnVariableChange", "inputs": {"variableName": "mode"}},
+        {"name": "changes", "type": "omni.graph.action.Counter"},
+        {"name": "tick", "type": "omni.graph.action.OnTick"},
+        {"name": "ticks", "type": "omni.graph.action.Counter"},
+        {"name": "every_third", "type": "omni.graph.nodes.Modulo", "inputs": {"b": 3}},
+        {"name": "write", "type": "omni.graph.core.WriteVariable", "inputs": {"variableName": "mode"}},
+        connections=[("watch.outputs:changed", "changes.inputs:execIn"), ("tick.outputs:tick", "ticks.inputs:execIn"),
+                     ("ticks.outputs:count", "every_third.inputs:a"), ("ticks.outputs:execOut", "write.inputs:execIn"),
+                     ("every_third.outputs:result", "write.inputs:value")])
+    graph["variables"] = [{"name": "mode", "type": "int64", "default": 0}]
+    harness = GraphHarness(graph)
+    counts = []
+    for _ in range(7):
+        harness.run(1)
+        counts.append(harness.output("changes", "count"))
+    # mode after each tick: 1, 2, 0, 1, 2, 0, 1 (count % 3); a change shows on the next tick
+    assert counts == [0, 1, 2, 3, 4, 5, 6]
