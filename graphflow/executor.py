@@ -48,14 +48,6 @@ def _discard(_entry) -> None:
     """Where ``compute_node`` sends the entries a compute enables: nowhere."""
 
 
-def missing_assets(document) -> dict[str, str]:
-    """Node name -> the line naming its input whose prim's layer the importer could not open (settings.missingAssets)."""
-    lines: dict[str, str] = {}
-    for entry in document.settings.get("missingAssets", ()):
-        lines.setdefault(entry["node"], f"input '{entry['input']}': {entry['message']}")
-    return lines
-
-
 def _refusal(line: str):
     """The compute of a node whose prim is missing: it fails with the importer's line the first time it runs."""
     def compute(db):
@@ -351,7 +343,7 @@ class GraphInstance:
     def _bind(self) -> None:
         """Bind the compiled tables to this instance's value dicts (which reset() refills in place)."""
         compiled, databases = self.compiled, self._databases
-        missing = missing_assets(compiled.document)
+        missing = compiled.document.missing_assets()
         self._computes = tuple(_refusal(missing[node.name]) if node.name in missing else node.node_type.compute
                                for node in compiled.nodes)
         self._idles = tuple(None if node.name in missing else node.node_type.idle for node in compiled.nodes)
