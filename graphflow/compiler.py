@@ -20,11 +20,11 @@ from typing import Any
 
 import networkx as nx
 
-from .model import GraphDocument, GraphError, NodeDoc, Problem
-from .executor import CompiledGraph
-from .registry import Registry, default_registry
-from .spec import NodeType
-from .types import TypeMismatch, can_connect, parse_type
+from graphflow.compiled import CompiledGraph
+from graphflow.model import GraphDocument, GraphError, NodeDoc, Problem
+from graphflow.registry import Registry, default_registry
+from graphflow.spec import NodeType
+from graphflow.types import TypeMismatch, can_connect, parse_type
 
 __all__ = ["compile", "problems", "GraphError", "Problem"]
 

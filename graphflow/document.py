@@ -16,10 +16,19 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from .model import (FORMAT_NAME, FORMAT_VERSION, Connection, GraphDocument, GraphError, NodeDoc, Problem,  # noqa: F401
-                    Variable, _frozen)
-from .files import FileProblem, read_json, write_text
-from .registry import Registry
+from graphflow.files import FileProblem, read_json, write_text
+from graphflow.model import (  # noqa: F401
+    FORMAT_NAME,
+    FORMAT_VERSION,
+    Connection,
+    GraphDocument,
+    GraphError,
+    NodeDoc,
+    Problem,
+    Variable,
+    _frozen,
+)
+from graphflow.registry import Registry
 
 
 @lru_cache(maxsize=1)
@@ -74,7 +83,7 @@ def parse_document(data: Any, source: str = "<graph>", registry: Registry | None
         checks=tuple(_frozen(check) for check in data.get("checks", [])),
         scenario=_frozen(data.get("scenario", {})),
     )
-    from .compiler import compile   # checking a document is compiling it
+    from graphflow.compiler import compile  # checking a document is compiling it
 
     compile(document, registry)
     return document
@@ -84,7 +93,7 @@ def _problems_of_valid_parts(data: Any, source: str, registry: Registry | None, 
     """Semantic problems of the entries the schema accepted, so one pass lists both kinds."""
     if not isinstance(data, dict) or not isinstance(data.get("nodes"), list):
         return []
-    from .compiler import problems
+    from graphflow.compiler import problems
 
     broken = {tuple(p.path[:2]) for p in schema_problems if len(p.path) >= 2}
     broken_sections = {p.path[0] for p in schema_problems if len(p.path) == 1}

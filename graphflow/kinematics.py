@@ -14,7 +14,7 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Sequence
 
-from .poses import quat_matrix, quat_normalize
+from graphflow.poses import quat_matrix, quat_normalize
 
 if TYPE_CHECKING:
     import numpy as np

@@ -17,7 +17,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-from .types import AttrType, TypeMismatch, parse_type
+from graphflow.types import AttrType, TypeMismatch, parse_type
 
 
 @dataclass(frozen=True)

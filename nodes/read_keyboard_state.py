@@ -3,7 +3,7 @@
 Keys come from the world's keyboard (``graphflow.keyboard``), polled once per
 physics step: the PyBullet window with ``--gui``, a scripted timeline headless.
 """
-from graphflow.keyboard import KEY_TOKENS, MODIFIER_KEYS, keyboard_for
+from graphflow.inputs.keyboard import KEY_TOKENS, MODIFIER_KEYS, keyboard_for
 from graphflow.spec import Attribute, NodeSpec
 
 SPEC = NodeSpec(

@@ -1,9 +1,15 @@
 """Compiling: a document is checked and built in one pass, and only a valid one becomes a compiled graph."""
+import graphflow_nodes
 import pytest
 
-import graphflow_nodes
 from graphflow.compiler import compile
-from graphflow.document import Connection, GraphDocument, GraphError, NodeDoc, parse_document
+from graphflow.document import (
+    Connection,
+    GraphDocument,
+    GraphError,
+    NodeDoc,
+    parse_document,
+)
 from graphflow.registry import Registry
 from graphflow.runtime import Simulation
 

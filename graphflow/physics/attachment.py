@@ -56,9 +56,16 @@ from typing import Sequence
 
 import pybullet
 
+from graphflow.poses import (
+    AXIS_VECTORS,
+    Pose,
+    compose,
+    invert,
+    quat_matrix,
+    quat_rotate,
+    relative,
+)
 from graphflow.world import RIGID, AxisCompliance
-
-from graphflow.poses import AXIS_VECTORS, Pose, compose, invert, quat_matrix, quat_rotate, relative
 
 HOLD_MAX_FORCE = 1.0e7          # N (and N·m); far above any break limit so the reading is never clamped
 CONTACT_DAMPING_STEPS = 10      # while the object touches something, damping >= this * m / dt

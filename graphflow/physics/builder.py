@@ -33,11 +33,18 @@ import math
 import os
 from dataclasses import dataclass, field, replace
 
+from graphflow.physics.contacts import anchor_friction, plane_box
+from graphflow.poses import (
+    AXIS_VECTORS,
+    IDENTITY_POSE,
+    Pose,
+    compose,
+    invert,
+    quat_from_axis_angle,
+    quat_multiply,
+)
 from graphflow.usd.description import Body, Joint, Shape, StageDescription
 from graphflow.usd.physics_import import joint_frame_offset
-from graphflow.poses import AXIS_VECTORS, IDENTITY_POSE, Pose, compose, invert, quat_from_axis_angle, quat_multiply
-
-from .contacts import anchor_friction, plane_box
 
 CONE_SEGMENTS = 24                 # a cone collider is the convex hull of this many base points and its apex
 CONSTRAINT_MAX_FORCE = 1.0e9       # joints between free bodies are rigid (see pybullet_notes §4 default quirk)

@@ -13,10 +13,10 @@ from dataclasses import dataclass
 import numpy as np
 import pybullet
 
+from graphflow.physics.builder import ArticulationHandle, BodyHandle
+from graphflow.physics.drive_law import MOTOR_MAX_FORCE, drive_efforts, motor_velocity
 from graphflow.usd.description import StageDescription
 
-from .builder import ArticulationHandle, BodyHandle
-from .drive_law import MOTOR_MAX_FORCE, drive_efforts, motor_velocity
 
 @dataclass
 class DriveTargets:

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .node_mapping import RENDERING_NODES
+from graphflow.usd.node_mapping import RENDERING_NODES
 
 NEEDS_EFFORT = "needs measured joint efforts, which graphflow's world does not report yet"
 NOT_YET = "not carried over yet"

@@ -17,13 +17,31 @@ import os
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from ..document import FORMAT_NAME, FORMAT_VERSION, GraphDocument, GraphError, parse_document
-from ..registry import Registry, default_registry
-from .graph_parts import PORT_CHANGES, graph_prefixes, graph_variables, map_version, prefixed
-from .node_mapping import (GENERIC_PUBLISHERS, LEGACY_GRIPPER_COMMANDS, LEGACY_GRIPPER_ID, PICK_PLACE_ID,
-                           PICK_PLACE_OLD_INPUTS, RENDERING_NODES, gather_message_fields, is_legacy_surface_gripper,
-                           legacy_gripper_command_node, legacy_gripper_renames, map_legacy_surface_gripper,
-                           map_old_pick_place, missing_target)
+from graphflow.document import (
+    FORMAT_NAME,
+    FORMAT_VERSION,
+    GraphDocument,
+    GraphError,
+    parse_document,
+)
+from graphflow.errors import BadInput
+from graphflow.registry import Registry, default_registry
+from graphflow.usd.graph_parts import PORT_CHANGES, graph_prefixes, graph_variables, map_version, prefixed
+from graphflow.usd.node_mapping import (
+    GENERIC_PUBLISHERS,
+    LEGACY_GRIPPER_COMMANDS,
+    LEGACY_GRIPPER_ID,
+    PICK_PLACE_ID,
+    PICK_PLACE_OLD_INPUTS,
+    RENDERING_NODES,
+    gather_message_fields,
+    is_legacy_surface_gripper,
+    legacy_gripper_command_node,
+    legacy_gripper_renames,
+    map_legacy_surface_gripper,
+    map_old_pick_place,
+    missing_target,
+)
 
 GRAPH_TYPE = "OmniGraph"
 NODE_TYPE = "OmniGraphNode"
@@ -31,7 +49,7 @@ UI_POSITION = "ui:nodegraph:node:pos"
 EXTENDED_VALUE = "omni:graph:attrValue"
 
 
-class ImportProblem(ValueError):
+class ImportProblem(BadInput):
     """The stage or graph cannot be imported; ``problems`` lists every reason, one line each."""
 
     def __init__(self, problems: list[str]):
@@ -60,8 +78,8 @@ def import_graph(stage_path: str, *, graph_path: str | None = None, output_path:
     Kit evaluates every graph of a stage: without *graph_path* all of them are imported, their
     node and variable names prefixed with the graph's name when there are several.
     """
-    from .errors import StageError
-    from .physics_import import open_stage
+    from graphflow.usd.errors import StageError
+    from graphflow.usd.physics_import import open_stage
 
     registry = registry or default_registry()
     label = str(stage_path)
@@ -153,7 +171,7 @@ def _import_one(stage, graph_prim, label: str, registry: Registry, skip_unknown:
                     missing = missing_target(stage, target)
                     if missing:
                         warnings.append(f"{label}: node '{name}' input 'inputs:{attribute.name}': {missing[0]}")
-                        if missing[1]:   # kept: only the computes that need the prim fail (docs/isaac.md)
+                        if missing[1]:   # kept: only the computes that need the prim fail
                             missing_assets.append({"node": name, "input": f"inputs:{attribute.name}",
                                                    "message": missing[0]})
         entry = {"name": name, "type": type_id, "inputs": inputs}

@@ -11,8 +11,9 @@ import math
 import pytest
 
 from graphflow.gripper.legacy import SurfaceGripper
-from graphflow.physics import asset_path, create_world
+from graphflow.physics import create_world
 from graphflow.poses import quat_rotate, relative
+from graphflow.usd.resolver import asset_path
 
 EE = "/ur10/ee_link"
 CUBE = "/World/Cube"
@@ -23,7 +24,7 @@ ARM = "/ur10"
 
 def _ur10_world(cube_mass, gap):
     """The UR10 at its default pose over a cube on a pedestal, the cube's top *gap* below the suction point."""
-    from pxr import Gf, Sdf, Usd, UsdGeom, UsdPhysics
+    from pxr import Gf, Usd, UsdGeom, UsdPhysics
 
     stage = Usd.Stage.CreateInMemory()
     UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)

@@ -8,7 +8,7 @@ pytest.importorskip("rosbags")
 from graphflow.poses import quat_from_axis_angle  # noqa: E402
 from graphflow.ros2.bus import topic_bus_for  # noqa: E402
 from graphflow.testing import NodeHarness  # noqa: E402
-from graphflow.testing_backend import FakeWorld  # noqa: E402
+from graphflow.testing.fake_world import FakeWorld  # noqa: E402
 
 BRIDGE = "isaacsim.ros2.bridge."
 YAW_90 = quat_from_axis_angle((0.0, 0.0, 1.0), math.pi / 2)

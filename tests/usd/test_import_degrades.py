@@ -87,7 +87,7 @@ def test_run_goes_on_until_the_first_compute_that_needs_the_missing_prim(tmp_pat
     capsys.readouterr()
     assert main(["run", str(tmp_path / "graph.json"), "--ticks", "30"]) == 1
     err = capsys.readouterr().err
-    assert f"graphflow: run-time error: {LINE}" in err
+    assert f"run-time failure: {LINE}" in err
     assert "(10 ticks," in err
 
 
