@@ -109,7 +109,7 @@ class CompiledGraph:
         ``counts`` lists, ``failure`` and ``GraphRuntimeError``. Only indices and repr() of names
         reach the source, so no text from a graph file can become code.
         """
-        schedule = _pure_schedule(self._data_graph, node.index, self.is_pure) if self.is_pure[node.index] \
+        schedule = _pure_schedule(self._data_graph, node.index, list(self.is_pure)) if self.is_pure[node.index] \
             else node.pure_schedule
         if not schedule:
             return ""

@@ -72,7 +72,7 @@ class _Compilation:
         pulls, exec_edges, data_graph = self._connections(node_types)
         if self.problems:
             raise GraphError(self.problems)
-        return CompiledGraph(document, self.registry, node_types=tuple(node_types), authored=tuple(authored),
+        return CompiledGraph(document, self.registry, node_types=tuple(t for t in node_types if t is not None), authored=tuple(authored),
                              pulls=pulls, exec_edges=exec_edges, data_graph=data_graph,
                              variable_types=variable_types, variable_defaults=variable_defaults)
 
@@ -183,7 +183,7 @@ class _Compilation:
         data_sources: dict[tuple[str, str], list[str]] = {}
         for connection in document.connections:
             label = f"{connection.src} -> {connection.dst}"
-            endpoints = []
+            endpoints: list[Any] = []
             for node_name, attr_name in ((connection.src_node, connection.src_attr),
                                          (connection.dst_node, connection.dst_attr)):
                 if node_name not in index_of:

@@ -20,7 +20,7 @@ from __future__ import annotations
 import logging
 from collections import Counter, deque
 from dataclasses import dataclass
-from typing import Any, Callable, Iterable
+from typing import Any, Callable, Iterable, NoReturn
 
 from graphflow.compiled import CompiledGraph, CompiledNode
 from graphflow.errors import RunFailure
@@ -152,7 +152,7 @@ class NodeDatabase:
             self.error(f"variable {name!r}: value nests more than {MAX_VALUE_DEPTH} levels deep")
         instance.variables[name] = value
 
-    def error(self, message: str):
+    def error(self, message: str) -> NoReturn:
         raise GraphRuntimeError(message, self.node_name)
 
     def request_stop(self) -> None:

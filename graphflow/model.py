@@ -48,7 +48,7 @@ class GraphError(BadInput):
         super().__init__("\n".join(str(p) for p in problems))
 
 
-def _frozen(mapping: Mapping) -> Mapping:
+def frozen_mapping(mapping: Mapping) -> Mapping:
     return MappingProxyType(dict(mapping))
 
 

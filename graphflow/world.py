@@ -59,7 +59,7 @@ class Services:
     """
 
     def __init__(self):
-        self._by_kind: dict[type, WorldService] = {}
+        self._by_kind: dict[type, Any] = {}
 
     def add(self, service: ServiceT, kind: type | None = None) -> ServiceT:
         """Add *service* as the world's one service of *kind* (default: its class), replacing any earlier one."""
@@ -259,7 +259,7 @@ def on_nearest_ancestor(path: str, query: Callable[[str], ServiceT]) -> tuple[st
         except WorldError as error:
             refusal = refusal or error
         candidate = candidate.rsplit("/", 1)[0]
-    raise refusal
+    raise refusal if refusal is not None else WorldError(f"{path}: no prim")
 
 
 class ClockWorld:
@@ -274,7 +274,7 @@ class ClockWorld:
         self.services = Services()
 
     stage = None                                    # no stage,
-    attachments = None                              # no bodies to attach,
+    attachments: Attachments | None = None          # no bodies to attach,
     attachment_joints: Mapping[str, Any] = MappingProxyType({})    # no attachment joints
 
     def step(self) -> None:

@@ -1,7 +1,7 @@
 """Compiling: a document is checked and built in one pass, and only a valid one becomes a compiled graph."""
-import graphflow_nodes
 import pytest
 
+import graphflow_nodes
 from graphflow.compiler import compile
 from graphflow.document import (
     Connection,

@@ -2,9 +2,9 @@
 import sys
 import types
 
-import graphflow_nodes
 import pytest
 
+import graphflow_nodes
 from graphflow.compiler import compile
 from graphflow.document import parse_document
 from graphflow.executor import GraphInstance, GraphRuntimeError, StepBudgetExceeded

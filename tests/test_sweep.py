@@ -172,7 +172,7 @@ def test_ctrl_c_keeps_finished_episodes_and_resume_finishes_the_rest(tmp_path):
     _wait_for_records(out / "episodes.jsonl", 3, process)
     process.send_signal(signal.SIGINT)
     _stdout, stderr = process.communicate(timeout=60)
-    assert process.returncode == 1
+    assert process.returncode == 130   # Ctrl-C is 130 everywhere (run, test, sweep)
     assert "interrupted: 3 of 4 episodes kept" in stderr and "--resume" in stderr
     assert "Traceback" not in stderr
     assert [r["key"] for r in records(out)] == ["p0-s0", "p1-s0", "p2-s0"]

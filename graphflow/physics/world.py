@@ -229,7 +229,7 @@ class PyBulletWorld(SceneLookups):
         r = tuple(o - c for o, c in zip(origin, com))
         cross = (angular[1] * r[2] - angular[2] * r[1], angular[2] * r[0] - angular[0] * r[2],
                  angular[0] * r[1] - angular[1] * r[0])
-        return tuple(l + c for l, c in zip(linear, cross)), tuple(angular)
+        return tuple(v + c for v, c in zip(linear, cross)), tuple(angular)
 
     def joint_names(self, articulation_path: str) -> tuple[str, ...]:
         return self._articulation(articulation_path).joint_names

@@ -161,14 +161,14 @@ class EpisodeRunner:
         return document
 
     def _world(self, document, stage_edits):
-        from graphflow import physics
+        from graphflow.runtime import create_world
 
         settings = document.settings
         if self._stage is None:
             self._stage = Variant(document, ()).open_stage()
         self._stage.GetSessionLayer().Clear()
         apply_stage_overrides(self._stage, stage_edits)
-        return physics.create_world(self._stage, time_step=settings.get("timeStep"),
+        return create_world(self._stage, time_step=settings.get("timeStep"),
                                     substeps=settings.get("substeps"))
 
     def _simulation_for(self, edits):
@@ -195,28 +195,35 @@ class EpisodeRunner:
         return self._simulation
 
     def run(self, episode: Episode) -> dict:
-        """One episode's record (see docs/sweeps.md); never raises for a failing episode."""
-        from graphflow.executor import GraphRuntimeError
+        """One episode's record (see docs/sweeps.md); never raises for a failing episode.
+
+        The episode is one ``CheckedRun`` on this worker's reused simulation: the same verdict rule as
+        ``graphflow run`` and ``graphflow test``; the sweep adds its metrics to it.
+        """
+        from graphflow.runtime import RunResult
+        from graphflow.verdicts.checked_run import CheckedRun, RunLimits
 
         started = time.perf_counter()
         self._warnings.clear()
         edits = self.sweep.edits(episode)
-        seed_everything(episode.seed)
+        seed_everything(episode.seed)   # before the world is built, as graphflow run --seed does
         simulation = self._simulation_for(edits)
         probe = self._episode.start(_MetricProbe(self.sweep.data.get("metrics", [])))
-        world = simulation.world
-        result, error, failed_checks = None, None, ()
-        try:
-            result = simulation.run(ticks=self.limits["ticks"], seconds=self.limits["seconds"])
-            failed_checks = tuple(str(f) for f in self._episode.evaluator.finish(simulation, result))
-        except GraphRuntimeError as failure:
-            error = f"run-time error: {failure}"
-        metrics = probe.finish(world, result)
+        checked = CheckedRun(simulation.document, source=self.sweep.graph_source, seed=episode.seed,
+                             limits=RunLimits(self.limits["ticks"], self.limits["seconds"]), simulation=simulation,
+                             evaluator=self._episode.evaluator)   # attached once, with the metrics probe
+        checked.start()
+        verdict = checked.run()
+        if verdict.run_error is None:
+            result, error, failed_checks = RunResult(verdict.ticks, verdict.time, verdict.stopped_by_graph), None, \
+                tuple(verdict.failures)
+        else:
+            result, error, failed_checks = None, f"run-time error: {verdict.run_error}", ()
+        metrics = probe.finish(simulation.world, result)
         passed, failures = episode_verdict(simulation, EpisodeRun(result, error, metrics, failed_checks))
         drawn = {_edit_name(e): _edit_value(e) for e in edits[len(self.sweep.fixed_overrides()) + len(episode.parameters):]}
         return episode_record(episode, passed=passed, failures=failures, metrics=metrics, randomized=drawn,
-                              ticks=result.ticks if result else simulation.instance.tick_count,
-                              time=world.time, finished=bool(result and result.stopped_by_graph),
+                              ticks=verdict.ticks, time=simulation.world.time, finished=verdict.stopped_by_graph,
                               warnings=self._warnings.lines, wall=time.perf_counter() - started,
                               replay=shlex.join(self.sweep.replay_command(episode)))
 

@@ -11,6 +11,7 @@ import sys
 import time
 from pathlib import Path
 
+from graphflow.errors import EXIT_INTERRUPTED
 from graphflow.sweep.definition import EPISODES_CSV, SUMMARY_CSV, load_sweep
 from graphflow.sweep.launchers import LocalPool, RayPool
 from graphflow.sweep.results import (
@@ -57,7 +58,7 @@ def default_out(sweep_path: str) -> Path:
 def run_sweep(path: str, *, out: str | None = None, jobs: int | None = None, ray_address: str | None = None,
               use_ray: bool = False, resume: bool = False, force: bool = False, progress: bool | None = None,
               echo=print) -> int:
-    """``graphflow sweep``: 0 when every episode ran (whatever their verdicts), 1 when interrupted."""
+    """``graphflow sweep``: 0 when every episode ran (whatever their verdicts), 130 when interrupted (as Ctrl-C anywhere)."""
     sweep = load_sweep(path)
     folder = ResultsFolder(Path(out) if out else default_out(path), sweep)
     episodes = sweep.episodes()
@@ -96,5 +97,5 @@ def run_sweep(path: str, *, out: str | None = None, jobs: int | None = None, ray
     if interrupted:
         echo(f"interrupted: {len(records)} of {len(episodes)} episodes kept; "
              f"graphflow sweep {path} --out {folder.path} --resume runs the rest", file=sys.stderr)
-        return 1
+        return EXIT_INTERRUPTED
     return 0

@@ -29,7 +29,7 @@ from typing import Any, Iterable, Sequence
 
 from graphflow.compiler import compile
 from graphflow.errors import BadInput
-from graphflow.model import GraphDocument, GraphError, _frozen
+from graphflow.model import GraphDocument, GraphError, frozen_mapping
 from graphflow.types import TypeMismatch
 
 YAW_OP_SUFFIX = "graphflowYaw"
@@ -139,7 +139,7 @@ def apply_node_overrides(document: GraphDocument, overrides: Iterable[Override])
         except TypeMismatch as error:
             raise OverrideError(f"{override.label}: node '{node_name}' input '{input_name}': {error}") from None
         inputs[node_name][input_name] = value
-    nodes = tuple(dataclasses.replace(node, inputs=_frozen(inputs[node.name])) for node in document.nodes)
+    nodes = tuple(dataclasses.replace(node, inputs=frozen_mapping(inputs[node.name])) for node in document.nodes)
     changed = dataclasses.replace(document, nodes=nodes)
     try:
         compile(changed, registry)   # checked exactly as the file is

@@ -39,6 +39,7 @@ class Verdict:
     trace: str | None = None
     expect_failure: tuple[str, ...] = ()   # the scenario section's expectFailure texts
     stopped_by_graph: bool = False
+    run_error: str | None = None   # the failing node's line, when the run stopped on one
 
     @property
     def run_passed(self) -> bool:
@@ -159,13 +160,14 @@ class CheckedRun:
     *document* is the graph as loaded; *variant* (``graphflow.variants.overrides.Variant``) its node
     overrides and stage edits (None: the document as it is). ``evaluate_checks`` False runs the
     graph without judging its checks (``graphflow run --ticks`` and the like change the run the checks
-    were written for). *simulation* reuses a built simulation (a sweep worker's), already reset.
+    were written for). *simulation* reuses a built simulation (a sweep worker's), already reset, whose
+    listeners its owner attached once; *evaluator* is then the check evaluator among them.
     """
 
     def __init__(self, document: GraphDocument, *, source: str | None = None, variant: Any = None,
                  inputs: ScriptedInputs = ScriptedInputs(), limits: RunLimits = RunLimits(),
                  evaluate_checks: bool = True, seed: int | None = None, gui: bool = False,
-                 listeners: Iterable[Any] = (), simulation: Any = None):
+                 listeners: Iterable[Any] = (), simulation: Any = None, evaluator: CheckEvaluator | None = None):
         self.source = source or document.source
         self.variant = variant
         self.document = variant.document if variant is not None else document
@@ -173,9 +175,10 @@ class CheckedRun:
         self.limits = limits
         self.seed = int(document.scenario.get("seed", 0)) if seed is None else seed
         self.gui = gui
-        self.evaluator = CheckEvaluator(self.document if evaluate_checks else None)
+        self.evaluator = evaluator or CheckEvaluator(self.document if evaluate_checks else None)
         self.listeners = list(listeners)
         self.simulation = simulation
+        self._attached = simulation is not None
         self.verdict = Verdict(self.source, len(self.evaluator),
                                expect_failure=tuple(self.document.scenario.get("expectFailure", ())))
 
@@ -190,12 +193,14 @@ class CheckedRun:
         from graphflow.runtime import Simulation
 
         seed_everything(self.seed)
-        if self.simulation is None:
-            world = self.variant.create_world(gui=self.gui) if self.variant is not None else None
-            self.simulation = Simulation(self.document, world=world, gui=self.gui)
+        if self._attached:
+            return self.simulation
+        world = self.variant.create_world(gui=self.gui) if self.variant is not None else None
+        self.simulation = Simulation(self.document, world=world, gui=self.gui)
         self.inputs.attach(self.simulation.world)
         for listener in (*self.listeners, self.evaluator):
             self.simulation.add_listener(listener)
+        self._attached = True
         return self.simulation
 
     def time_limit(self) -> float | None:
@@ -206,13 +211,14 @@ class CheckedRun:
 
     def run(self) -> Verdict:
         """Tick to the end and judge; a failing node is a failure line, never an exception."""
-        simulation = self.simulation if self.simulation is not None else self.start()
+        simulation = self.simulation if self._attached else self.start()
         verdict = self.verdict
         try:
             result = simulation.run(ticks=self.limits.ticks, seconds=self.time_limit())
         except GraphRuntimeError as error:
             if isinstance(error.__cause__, BrokenPipeError):
                 raise   # the reader of our output has gone: not the graph's failure
+            verdict.run_error = str(error)
             verdict.failures.append(f"{self.source}: run-time failure: {error}")
             verdict.ticks, verdict.time = simulation.instance.tick_count, simulation.world.time
             return verdict

@@ -18,9 +18,8 @@ CHAIN = ur10_chain()
 
 
 def test_the_default_orientation_is_the_solvers_suction_down():
-    from graphflow_nodes._pick_place import SUCTION_DOWN as written_out
-
     from graphflow.kinematics import SUCTION_DOWN
+    from graphflow_nodes._pick_place import SUCTION_DOWN as written_out
 
     assert written_out == SUCTION_DOWN
 
