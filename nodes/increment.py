@@ -6,7 +6,6 @@ zero (4 + 3.2 -> 7).
 import math
 
 from graphflow.spec import Attribute, NodeSpec
-
 from graphflow_nodes._math import MathError, elementwise
 
 SPEC = NodeSpec(

@@ -5,7 +5,6 @@ in metres into stage units (toStage) or multiplies stage units into metres
 (toMeters), elementwise for tuples and arrays.
 """
 from graphflow.spec import Attribute, NodeSpec
-
 from graphflow_nodes._math import MathError, elementwise
 
 TO_STAGE, TO_METERS = "Convert to stage units", "Convert to meters"
