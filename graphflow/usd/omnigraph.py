@@ -140,7 +140,7 @@ def _import_one(stage, graph_prim, label: str, registry: Registry, skip_unknown:
         name, type_id = prim.GetName(), _value(prim.GetAttribute("node:type"))
         version = _value(prim.GetAttribute("node:typeVersion"))
         if type_id in RENDERING_NODES:
-            warnings.append(f"{label}: node '{name}' ({type_id}): dropped: {RENDERING_NODES[type_id]}")
+            warnings.append(f"{label}: node '{name}' ({type_id}): dropped: {RENDERING_NODES[type_id]} ({prim.GetPath()})")
             continue
         legacy_gripper = is_legacy_surface_gripper(type_id, version)
         if legacy_gripper:
