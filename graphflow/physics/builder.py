@@ -29,6 +29,7 @@ Mapping (documented in ``graphflow.physics``):
 """
 from __future__ import annotations
 
+import hashlib
 import math
 import os
 from dataclasses import dataclass, field, replace
@@ -197,9 +198,10 @@ class SceneBuilder:
                                            collisionFrameOrientations=orientations)
 
     def _hull_file(self, shape: Shape) -> str:
-        """PyBullet's compound shapes take meshes only from files: write the hull points as an OBJ once."""
+        """PyBullet's compound shapes take meshes only from files: write the hull points as an OBJ once, named by
+        a hash of the prim path (the path itself overran the 255-byte file-name limit on deep converted robots)."""
         points = shape.points if shape.kind == "convex_mesh" else _cone_points(shape)
-        name = shape.path.strip("/").replace("/", "__") + ".obj"
+        name = "hull-" + hashlib.sha256(shape.path.encode()).hexdigest()[:24] + ".obj"
         file_path = os.path.join(self.mesh_directory, name)
         if not os.path.exists(file_path):
             with open(file_path, "w", encoding="ascii") as obj:

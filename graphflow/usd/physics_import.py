@@ -31,6 +31,7 @@ from graphflow.poses import AXIS_VECTORS, Pose, compose, quat_normalize, quat_ro
 
 DEFAULT_GRAVITY = 9.81                 # m/s^2, along minus the up axis
 IN_MEMORY = "<in-memory stage>"
+INERTIA_ROUNDING = 0.01                # a largest principal moment up to 1 % over the other two is rounding
 
 
 def open_stage(stage_or_path):
@@ -178,7 +179,8 @@ class _Importer:
         return self._in_path_order(self.description)
 
     def _prim_problems(self) -> list[str]:
-        """What no simulation can take, every one: negative or non-finite masses, collider boxes and
+        """What no simulation can take, every one: negative or non-finite masses, inertias with a moment
+        <= 0 or non-finite (PyBullet raised SystemError on them), collider boxes and
         spheres of zero or non-finite size, bodies and colliders with non-finite transforms."""
         from pxr import Usd, UsdGeom, UsdPhysics
 
@@ -195,6 +197,11 @@ class _Importer:
             mass = self._attribute(prim, "physics:mass") if prim.HasAPI(UsdPhysics.MassAPI) else None
             if mass is not None and not (math.isfinite(mass) and mass >= 0):
                 problems.append(f"{where}: physics:mass is {mass!r}; a mass must be a finite number >= 0")
+            inertia = self._attribute(prim, "physics:diagonalInertia") if prim.HasAPI(UsdPhysics.MassAPI) else None
+            if inertia is not None and tuple(inertia) != (0.0, 0.0, 0.0) and not all(
+                    math.isfinite(value) and value > 0 for value in inertia):   # (0, 0, 0): from the colliders
+                problems.append(f"{where}: physics:diagonalInertia is ({', '.join(f'{v:g}' for v in inertia)}); "
+                                "an inertia is three finite moments > 0, or (0, 0, 0) to compute it")
             if not is_collider:
                 continue
             if prim.IsA(UsdGeom.Cube):
@@ -402,8 +409,26 @@ class _Importer:
             # changed from run to run, and so did the simulation). Use the body's own geometry instead.
             diagonal, principal_axes = _geometry_inertia(self._fallback_shapes(prim, body), mass,
                                                          self._vec(center), diagonal)
+        diagonal = self._valid_inertia(prim, diagonal)
         return MassProperties(mass=mass, center_of_mass=self._vec(center), diagonal_inertia=diagonal,
                               principal_axes=principal_axes)
+
+    def _valid_inertia(self, prim, diagonal: tuple) -> tuple:
+        """The principal moments, each at most the sum of the other two (the triangle inequality every rigid
+        body meets, which PyBullet's inverse dynamics checks strictly). Within INERTIA_ROUNDING of it (a
+        thin disc or rod rounded in a converted URDF) the largest is lowered onto the bound and named;
+        beyond, the stage is refused naming the body and the moments."""
+        largest = max(range(3), key=lambda axis: diagonal[axis])
+        others = sum(diagonal) - diagonal[largest]
+        if diagonal[largest] <= others:
+            return diagonal
+        moments = "(" + ", ".join(f"{value:g}" for value in diagonal) + ") kg m^2"
+        if diagonal[largest] - others > INERTIA_ROUNDING * diagonal[largest]:
+            self._fail(f"body {prim.GetPath()}: principal moments of inertia {moments} break the triangle "
+                       f"inequality ({'xyz'[largest]} exceeds the sum of the other two): no rigid body has them")
+        self._unsupported(str(prim.GetPath()), f"principal moments of inertia {moments} rounded onto the triangle "
+                          "inequality (the largest lowered to the sum of the other two)")
+        return tuple(others if axis == largest else diagonal[axis] for axis in range(3))
 
     def _fallback_shapes(self, prim, body: Body) -> list[Shape]:
         """Shapes to take a body's inertia from when it has no enabled collider: its disabled

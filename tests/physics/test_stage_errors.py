@@ -1,0 +1,68 @@
+"""Every stage error a line (issue 26 item 3, issue 21 item 5): nothing from PyBullet or the file system
+reaches the user, and the stage report names what it leaves out."""
+import warnings
+
+import pytest
+from pxr import Gf, UsdGeom, UsdPhysics
+
+from graphflow.physics import StageError, UnsupportedPrimWarning, create_world
+
+from .test_import import add_body, make_stage
+
+LONG = "/World/" + "/".join(f"converted_robot_link_with_a_long_name_{i:02d}" for i in range(8))
+
+
+def hull_body(stage, path):
+    """A 0.1 m convex-hull cube body at *path*, 1 m up."""
+    for index, prefix in enumerate(path.strip("/").split("/")[:-1]):
+        UsdGeom.Xform.Define(stage, "/" + "/".join(path.strip("/").split("/")[:index + 1]))
+    mesh = UsdGeom.Mesh.Define(stage, path)
+    mesh.CreatePointsAttr([(x, y, z) for x in (-0.05, 0.05) for y in (-0.05, 0.05) for z in (-0.05, 0.05)])
+    mesh.CreateFaceVertexCountsAttr([4] * 6)
+    mesh.CreateFaceVertexIndicesAttr([0, 1, 3, 2, 4, 6, 7, 5, 0, 4, 5, 1, 2, 3, 7, 6, 0, 2, 6, 4, 1, 5, 7, 3])
+    mesh.AddTranslateOp().Set(Gf.Vec3d(0, 0, 1))
+    UsdPhysics.RigidBodyAPI.Apply(mesh.GetPrim())
+    UsdPhysics.CollisionAPI.Apply(mesh.GetPrim())
+    UsdPhysics.MeshCollisionAPI.Apply(mesh.GetPrim()).CreateApproximationAttr("convexHull")
+    UsdPhysics.MassAPI.Apply(mesh.GetPrim()).CreateMassAttr(1.0)
+
+
+def test_a_hull_deep_in_a_long_prim_path_builds_and_falls_freely():
+    """A 400-character prim path (the hull's file was named after it: "File name too long"): the cube falls
+    g t^2 / 2 = 1.226 m in 0.5 s, as a free body should (within the integrator's 1 %)."""
+    assert len(LONG) > 300
+    stage = make_stage()
+    hull_body(stage, LONG)
+    with create_world(stage) as world:
+        for _ in range(30):
+            world.step()
+        assert 1.0 - world.prim_pose(LONG)[0][2] == pytest.approx(9.81 * 0.5 ** 2 / 2, rel=0.015)
+
+
+@pytest.mark.parametrize("inertia, message", [
+    ((-0.01, 0.02, 0.02), r"/World/Link: physics:diagonalInertia is \(-0.01, 0.02, 0.02\); an inertia is"),
+    ((0.0, 0.02, 0.02), r"/World/Link: physics:diagonalInertia is \(0, 0.02, 0.02\); an inertia is"),
+    ((float("nan"), 0.02, 0.02), r"/World/Link: physics:diagonalInertia is \(nan, 0.02, 0.02\); an inertia is"),
+    ((0.01, 0.01, 0.03), r"body /World/Link: principal moments of inertia \(0.01, 0.01, 0.03\) kg m\^2 break the triangle inequality"),
+])
+def test_an_impossible_inertia_is_refused_naming_the_body_and_the_value(inertia, message):
+    stage = make_stage()
+    box = add_body(stage, "/World/Link", size=0.1, mass=1.0)
+    UsdPhysics.MassAPI(box).CreateDiagonalInertiaAttr(Gf.Vec3f(*inertia))
+    with pytest.raises(StageError, match=message) as caught:
+        create_world(stage)
+    assert "\n" not in str(caught.value)
+
+
+def test_a_disc_rounded_past_the_triangle_inequality_is_lowered_onto_it_and_named():
+    """Izz = Ixx + Iyy + 0.4 %: a thin disc's moments rounded in a converted URDF; simulated with Izz = Ixx + Iyy
+    (PyBullet's inverse dynamics refused it with a SystemError), and named once."""
+    stage = make_stage()
+    box = add_body(stage, "/World/Disc", size=0.1, mass=1.0)
+    UsdPhysics.MassAPI(box).CreateDiagonalInertiaAttr(Gf.Vec3f(0.001, 0.001, 0.002008))
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", UnsupportedPrimWarning)
+        with create_world(stage) as world:
+            inertia = world.client.getDynamicsInfo(world.scene.bodies["/World/Disc"].body_id, -1)[2]
+    assert inertia == pytest.approx((0.001, 0.001, 0.002), rel=1e-6)
+    assert any("rounded onto the triangle inequality" in str(w.message) for w in caught)
