@@ -31,6 +31,10 @@ from graphflow.poses import AXIS_VECTORS, Pose, compose, quat_normalize, quat_ro
 
 DEFAULT_GRAVITY = 9.81                 # m/s^2, along minus the up axis
 IN_MEMORY = "<in-memory stage>"
+# A body with neither mass nor colliders is a frame (a converted MJCF site, a tool point): MuJoCo gives it no
+# mass; PyBullet needs some, so 1 g on a 1 cm sphere (2/5 m r^2), not the 1 kg that sagged converted arms
+FRAME_BODY_MASS = 1.0e-3               # kg
+FRAME_BODY_INERTIA = 0.4 * FRAME_BODY_MASS * 0.01 ** 2    # kg m^2
 INERTIA_ROUNDING = 0.01                # a largest principal moment up to 1 % over the other two is rounding
 
 
@@ -400,8 +404,9 @@ class _Importer:
             has_axes = authored is not None and (authored.GetReal() != 0 or any(authored.GetImaginary()))
             principal_axes = _quat(authored) if has_axes else (0.0, 0.0, 0.0, 1.0)
         if mass <= 0.0:
-            self._unsupported(str(prim.GetPath()), "a rigid body without mass or colliders (given 1 kg)")
-            mass, diagonal = 1.0, (1e-3, 1e-3, 1e-3)
+            self._unsupported(str(prim.GetPath()), "a rigid body without mass or colliders (a frame or a site): "
+                              f"given {FRAME_BODY_MASS * 1000:g} g, a 1 cm sphere's inertia")
+            mass, diagonal = FRAME_BODY_MASS, (FRAME_BODY_INERTIA,) * 3
         elif not any(shape.collision_enabled for shape in body.shapes) and not (
                 prim.HasAPI(UsdPhysics.MassAPI) and mass_api.GetDiagonalInertiaAttr().HasAuthoredValue()):
             # usd-core found no collider to integrate: it warns "possibly invalid inertia tensor of

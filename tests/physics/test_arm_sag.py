@@ -64,3 +64,29 @@ def test_the_reference_is_pybullets_inverse_dynamics_too(arm, tmp_path):
         rest = [0.0] * len(arm.home)
         holding = world.client.calculateInverseDynamics(articulation.body_id, list(arm.home), rest, rest)
     assert np.allclose(-np.array(holding), arm.gravity_torques(arm.home), atol=1e-9)
+
+
+def test_a_site_at_the_tool_adds_no_phantom_mass(tmp_path):
+    """A body holding only a site (no mass, no collider: a converted MJCF tool frame), welded 0.1 m beyond the
+    UR5e's flange: it is named and weighs 1 g, so the arm sags as the reference without it (it got 1 kg, which
+    at 0.9 m adds ~8 N m to the shoulder's 42.7: 19 %)."""
+    from pxr import Gf, Usd, UsdGeom, UsdPhysics
+
+    path = write_usda(UR5E, tmp_path / "ur5e_site.usda")
+    stage = Usd.Stage.Open(path)
+    site = UsdGeom.Xform.Define(stage, "/World/Arm/tool_site")
+    frame = UR5E.transforms([0.0] * 6)[-1]
+    site.AddTranslateOp().Set(Gf.Vec3d(*(frame[:3, 3] + 0.1 * frame[:3, 2])))
+    UsdPhysics.RigidBodyAPI.Apply(site.GetPrim())
+    weld = UsdPhysics.FixedJoint.Define(stage, "/World/Arm/tool_weld")
+    weld.CreateBody0Rel().SetTargets(["/World/Arm/link6"])
+    weld.CreateBody1Rel().SetTargets(["/World/Arm/tool_site"])
+    weld.CreateLocalPos0Attr(Gf.Vec3f(0, 0, 0.1))
+    stage.GetRootLayer().Save()
+    with create_world(path) as world:
+        assert any(prim == "/World/Arm/tool_site" and "given 1 g" in reason for prim, reason in world.unsupported)
+        for _ in range(round(SECONDS / world.time_step)):
+            world.step()
+        sag = np.array(world.joint_positions("/World/Arm")) - np.array(UR5E.home)
+    expected = UR5E.static_positions() - np.array(UR5E.home)
+    assert sag[1] == pytest.approx(expected[1], rel=0.05) and sag[2] == pytest.approx(expected[2], rel=0.05)
