@@ -27,6 +27,7 @@ from .description import (AxisLimit, Articulation, Body, Drive, Joint, MassPrope
 from graphflow.messages import usd_message
 
 from .errors import StageError, warn_unsupported
+from .ignored import ignored_authoring
 from graphflow.poses import AXIS_VECTORS, Pose, compose, quat_normalize, quat_rotate, relative, twist_angle
 
 DEFAULT_GRAVITY = 9.81                 # m/s^2, along minus the up axis
@@ -180,6 +181,7 @@ class _Importer:
         self._surface_grippers()
         self._solver_iterations(parsed.get(kinds.Scene))
         self._unsimulated_sleep()
+        self.description.ignored = ignored_authoring(self.stage)
         return self._in_path_order(self.description)
 
     def _prim_problems(self) -> list[str]:
