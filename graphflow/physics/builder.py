@@ -38,7 +38,7 @@ from graphflow.usd.description import Body, Joint, Shape, StageDescription
 from graphflow.usd.physics_import import joint_frame_offset
 from graphflow.poses import AXIS_VECTORS, IDENTITY_POSE, Pose, compose, invert, quat_from_axis_angle, quat_multiply
 
-from .contacts import anchor_friction, plane_box
+from .contacts import ROLLING_SHAPES, anchor_friction, plane_box
 
 CONE_SEGMENTS = 24                 # a cone collider is the convex hull of this many base points and its apex
 CONSTRAINT_MAX_FORCE = 1.0e9       # joints between free bodies are rigid (see pybullet_notes §4 default quirk)
@@ -211,7 +211,7 @@ class SceneBuilder:
         return file_path
 
     # -- bodies ----------------------------------------------------------------------
-    def _apply_dynamics(self, body_id: int, link: int, body: Body):
+    def _apply_dynamics(self, body_id: int, link: int, body: Body, turns: bool = False):
         p = self.p
         friction = body.shapes[0].material.static_friction if body.shapes else 0.5
         restitution = body.shapes[0].material.restitution if body.shapes else 0.0
@@ -220,8 +220,8 @@ class SceneBuilder:
                          linearDamping=body.linear_damping, angularDamping=body.angular_damping)
         if body.mass is not None and body.kind == "dynamic":
             p.changeDynamics(body_id, link, localInertiaDiagonal=list(body.mass.diagonal_inertia))
-        if body.kind == "dynamic":
-            anchor_friction(p, body_id, link)
+        if body.kind == "dynamic" and not (turns or any(shape.kind in ROLLING_SHAPES for shape in body.shapes)):
+            anchor_friction(p, body_id, link)     # not on what rolls (see contacts.anchor_friction)
 
     def _register(self, body: Body, body_id: int, link: int, inertial_in_prim: Pose, articulation: str | None,
                   mass: float):
@@ -406,10 +406,10 @@ class SceneBuilder:
             if not tree.fixed_base:
                 self.p.resetBaseVelocity(body_id, root.linear_velocity, root.angular_velocity)
         arrays = links.arrays
-        for child, _joint, _parent, _is_body1 in tree.order:
+        for child, joint, _parent, _is_body1 in tree.order:
             body = self.description.bodies[child]
             index = links.link_index[child]
-            self._apply_dynamics(body_id, index, body)
+            self._apply_dynamics(body_id, index, body, turns=joint.kind == "revolute")
             inertial_in_prim = compose(invert(links.link_from_prim[child]),
                                        (tuple(arrays["inertial_positions"][index]),
                                         tuple(arrays["inertial_orientations"][index])))

@@ -26,6 +26,7 @@ from .description import (AxisLimit, Articulation, Body, Drive, Joint, MassPrope
                           StageDescription, SurfaceGripper)
 from graphflow.messages import usd_message
 
+from .authored_values import joint_problems, mass_problems, unit_mismatches
 from .errors import StageError, warn_unsupported
 from .ignored import ignored_authoring
 from graphflow.poses import AXIS_VECTORS, Pose, compose, quat_normalize, quat_rotate, relative, twist_angle
@@ -182,16 +183,20 @@ class _Importer:
         self._solver_iterations(parsed.get(kinds.Scene))
         self._unsimulated_sleep()
         self.description.ignored = ignored_authoring(self.stage)
+        for layer, reason in unit_mismatches(self.stage):
+            self._unsupported(layer, reason)
         return self._in_path_order(self.description)
 
     def _prim_problems(self) -> list[str]:
-        """What no simulation can take, every one: negative or non-finite masses, inertias with a moment
-        <= 0 or non-finite (PyBullet raised SystemError on them), collider boxes and
+        """What no simulation can take, every one: negative or non-finite masses, the inertias, centres of
+        mass, joint frames, drive values and limits ``authored_values`` refuses, collider boxes and
         spheres of zero or non-finite size, bodies and colliders with non-finite transforms."""
         from pxr import Usd, UsdGeom, UsdPhysics
 
         problems = []
         for prim in Usd.PrimRange(self.stage.GetPseudoRoot()):
+            if prim.IsA(UsdPhysics.Joint):
+                problems.extend(joint_problems(prim, f"{self.label}: joint {prim.GetPath()}"))
             is_body, is_collider = prim.HasAPI(UsdPhysics.RigidBodyAPI), prim.HasAPI(UsdPhysics.CollisionAPI)
             if not (is_body or is_collider):
                 continue
@@ -203,11 +208,8 @@ class _Importer:
             mass = self._attribute(prim, "physics:mass") if prim.HasAPI(UsdPhysics.MassAPI) else None
             if mass is not None and not (math.isfinite(mass) and mass >= 0):
                 problems.append(f"{where}: physics:mass is {mass!r}; a mass must be a finite number >= 0")
-            inertia = self._attribute(prim, "physics:diagonalInertia") if prim.HasAPI(UsdPhysics.MassAPI) else None
-            if inertia is not None and tuple(inertia) != (0.0, 0.0, 0.0) and not all(
-                    math.isfinite(value) and value > 0 for value in inertia):   # (0, 0, 0): from the colliders
-                problems.append(f"{where}: physics:diagonalInertia is ({', '.join(f'{v:g}' for v in inertia)}); "
-                                "an inertia is three finite moments > 0, or (0, 0, 0) to compute it")
+            if prim.HasAPI(UsdPhysics.MassAPI):
+                problems.extend(mass_problems(prim, where))
             if not is_collider:
                 continue
             if prim.IsA(UsdGeom.Cube):
