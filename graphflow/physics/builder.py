@@ -32,9 +32,12 @@ from __future__ import annotations
 import hashlib
 import math
 import os
+
+import pybullet
 from dataclasses import dataclass, field, replace
 
 from graphflow.usd.description import Body, Joint, Shape, StageDescription
+from graphflow.usd.errors import StageError
 from graphflow.usd.physics_import import joint_frame_offset
 from graphflow.poses import AXIS_VECTORS, IDENTITY_POSE, Pose, compose, invert, quat_from_axis_angle, quat_multiply
 
@@ -192,10 +195,15 @@ class SceneBuilder:
             orientations.append(list(pose[1]))
         if not kinds:
             return -1
-        return p.createCollisionShapeArray(shapeTypes=kinds, radii=radii, halfExtents=half_extents, lengths=lengths,
-                                           fileNames=files, meshScales=[[1.0, 1.0, 1.0]] * len(kinds),
-                                           collisionFramePositions=positions,
-                                           collisionFrameOrientations=orientations)
+        try:
+            return p.createCollisionShapeArray(shapeTypes=kinds, radii=radii, halfExtents=half_extents,
+                                               lengths=lengths, fileNames=files,
+                                               meshScales=[[1.0, 1.0, 1.0]] * len(kinds),
+                                               collisionFramePositions=positions,
+                                               collisionFrameOrientations=orientations)
+        except pybullet.error:    # e.g. a hull of two points: PyBullet says only "createCollisionShapeArray failed"
+            raise StageError(f"{self.description.source}: collider {', '.join(s.path for s in shapes)}: PyBullet "
+                             "cannot make a collision shape of it (a hull needs 3 points not on a line)") from None
 
     def _hull_file(self, shape: Shape) -> str:
         """PyBullet's compound shapes take meshes only from files: write the hull points as an OBJ once, named by

@@ -32,10 +32,27 @@ def mass_problems(prim, where: str) -> list[str]:
             math.isfinite(value) and value > 0 for value in inertia):   # (0, 0, 0): from the colliders
         problems.append(f"{where}: physics:diagonalInertia is {_shown(inertia)}; an inertia is three finite "
                         "moments > 0, or (0, 0, 0) to compute it")
+    density = _authored(prim, "physics:density")
+    if density is not None and not (math.isfinite(density) and density >= 0):
+        problems.append(f"{where}: physics:density is {_shown(density)}; a density must be a finite number >= 0")
     centre = _authored(prim, "physics:centerOfMass")
     if centre is not None and not (all(math.isfinite(c) for c in centre) or all(c == -math.inf for c in centre)):
         problems.append(f"{where}: physics:centerOfMass is {_shown(centre)}; a centre of mass must be finite")
     return problems
+
+
+def round_collider_problems(prim, where: str) -> list[str]:
+    """A cylinder, capsule or cone collider whose radius is not > 0 or whose height is negative or not finite
+    (PyBullet's createCollisionShapeArray failed with a bare "error")."""
+    from pxr import UsdGeom
+
+    for schema, kind in ((UsdGeom.Cylinder, "cylinder"), (UsdGeom.Capsule, "capsule"), (UsdGeom.Cone, "cone")):
+        if prim.IsA(schema):
+            radius, height = schema(prim).GetRadiusAttr().Get(), schema(prim).GetHeightAttr().Get()
+            if radius is None or height is None or not (math.isfinite(radius) and radius > 0
+                                                        and math.isfinite(height) and height >= 0):
+                return [f"{where}: a collider {kind} of invalid size (radius {radius!r}, height {height!r})"]
+    return []
 
 
 def joint_problems(prim, where: str) -> list[str]:

@@ -26,7 +26,7 @@ from .description import (AxisLimit, Articulation, Body, Drive, Joint, MassPrope
                           StageDescription, SurfaceGripper)
 from graphflow.messages import usd_message
 
-from .authored_values import joint_problems, mass_problems, unit_mismatches
+from .authored_values import joint_problems, mass_problems, round_collider_problems, unit_mismatches
 from .errors import StageError, warn_unsupported
 from .ignored import ignored_authoring
 from graphflow.poses import AXIS_VECTORS, Pose, compose, quat_normalize, quat_rotate, relative, twist_angle
@@ -212,6 +212,7 @@ class _Importer:
                 problems.extend(mass_problems(prim, where))
             if not is_collider:
                 continue
+            problems.extend(round_collider_problems(prim, where))
             if prim.IsA(UsdGeom.Cube):
                 size = UsdGeom.Cube(prim).GetSizeAttr().Get()
                 if size is None or not (math.isfinite(size) and size > 0) or matrix.GetDeterminant3() == 0:

@@ -101,3 +101,40 @@ def test_graphflow_stage_names_undriven_joints_and_other_simulators_authoring(tm
            "urdf:limit:effort not simulated" in out
     assert "/World/Arm/shoulder_motor: MuJoCo prim MjcActuator not simulated" in out
     assert "drives at their targets" not in out and "no drives: every joint free" in out
+
+
+@pytest.mark.parametrize("geometry, size, message", [
+    (UsdGeom.Cylinder, {"radius": 0.0, "height": 0.1}, r"a collider cylinder of invalid size \(radius 0.0, height 0.1\)"),
+    (UsdGeom.Capsule, {"radius": 0.0, "height": 0.1}, r"a collider capsule of invalid size \(radius 0.0, height 0.1\)"),
+    (UsdGeom.Cylinder, {"radius": float("nan"), "height": 0.1}, r"a collider cylinder of invalid size \(radius nan"),
+])
+def test_a_round_collider_of_no_size_is_refused(geometry, size, message):
+    """PyBullet's createCollisionShapeArray failed on these with a bare "error" (an unexpected error)."""
+    stage = make_stage()
+    add_body(stage, "/World/Wheel", geometry=geometry, mass=1.0, **size)
+    with pytest.raises(StageError, match="/World/Wheel: " + message):
+        create_world(stage)
+
+
+def test_a_nan_density_is_refused():
+    """It diverged at physics step 1."""
+    stage = make_stage()
+    box = add_body(stage, "/World/Box", size=0.1)
+    UsdPhysics.MassAPI.Apply(box).CreateDensityAttr(float("nan"))
+    with pytest.raises(StageError, match=r"/World/Box: physics:density is nan; a density must be a finite number"):
+        create_world(stage)
+
+
+def test_a_hull_pybullet_cannot_make_is_a_stage_error_naming_the_collider():
+    """Two points: PyBullet raised pybullet.error("createCollisionShapeArray failed.")."""
+    stage = make_stage()
+    mesh = UsdGeom.Mesh.Define(stage, "/World/Sliver")
+    mesh.CreatePointsAttr([(0, 0, 0), (0.1, 0, 0)])
+    mesh.CreateFaceVertexCountsAttr([2])
+    mesh.CreateFaceVertexIndicesAttr([0, 1])
+    UsdPhysics.RigidBodyAPI.Apply(mesh.GetPrim())
+    UsdPhysics.CollisionAPI.Apply(mesh.GetPrim())
+    UsdPhysics.MeshCollisionAPI.Apply(mesh.GetPrim()).CreateApproximationAttr("convexHull")
+    UsdPhysics.MassAPI.Apply(mesh.GetPrim()).CreateMassAttr(1.0)
+    with pytest.raises(StageError, match=r"collider /World/Sliver: PyBullet cannot make a collision shape of it"):
+        create_world(stage)
