@@ -73,6 +73,6 @@ def bare_world(path: Path, keys: Path | None = None):
 
 
 def attach_keys(world, keys: Path) -> None:
-    from graphflow.keyboard import attach_keyboard, scripted_keys
+    from graphflow.inputs.keyboard import attach_keyboard, scripted_keys
 
     attach_keyboard(world, scripted_keys(require(keys)))

@@ -80,7 +80,7 @@ def run(quick: bool = False) -> str:
     document = build_document(chains, adds)
     graph, baseline = Simulation(document), Simulation(document)
     inline_tick = inline_loop(baseline, chains, adds)
-    graph_world, baseline_world = graph.world, baseline.world
+    baseline_world = baseline.world
 
     def run_graph():
         step = graph.step

@@ -64,7 +64,8 @@ def _quick_sweep(folder: Path) -> Path:
 
 def _pyramid_cpu_per_episode(count: int = 3) -> float:
     """CPU seconds per episode of the randomized pyramid sweep in one warm runner (the pool's steady state)."""
-    from graphflow.sweep import EpisodeRunner, load_sweep
+    from graphflow.sweep.definition import load_sweep
+    from graphflow.sweep.episode import EpisodeRunner
 
     sweep = load_sweep(str(PYRAMID))
     runner = EpisodeRunner(sweep)
@@ -82,13 +83,14 @@ def _per_process(sweep, episodes) -> float:
     """Wall seconds to run *episodes* as one ``graphflow run`` process each (the records' replay commands)."""
     started = time.perf_counter()
     for episode in episodes:
-        command = [sys.executable, "-m", "graphflow.cli", *sweep.replay_command(episode)[1:]]
+        command = [sys.executable, "-m", "graphflow", *sweep.replay_command(episode)[1:]]
         subprocess.run(command, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, cwd=ROOT)
     return time.perf_counter() - started
 
 
 def run(quick: bool = False) -> str:
-    from graphflow.sweep import LocalPool, RayPool, load_sweep
+    from graphflow.sweep.definition import load_sweep
+    from graphflow.sweep.launchers import LocalPool, RayPool
 
     with tempfile.TemporaryDirectory() as folder:
         if quick:

@@ -17,3 +17,28 @@ else:
     _paths = [p for p in _os.environ.get("PXR_PLUGINPATH_NAME", "").split(_os.pathsep) if p]
     if _ISAAC_SCHEMA not in _paths:
         _os.environ["PXR_PLUGINPATH_NAME"] = _os.pathsep.join([*_paths, _ISAAC_SCHEMA])
+
+
+# The public API: what a user scripts against. Names resolve on first use (PEP 562), so ``import graphflow``
+# stays cheap and never loads numpy, usd-core or PyBullet before a graph needs them.
+_EXPORTS = {
+    "load_document": "graphflow.document", "parse_document": "graphflow.document", "save_document": "graphflow.document",
+    "GraphDocument": "graphflow.model", "compile": "graphflow.compiler", "CompiledGraph": "graphflow.compiled",
+    "GraphInstance": "graphflow.executor", "Simulation": "graphflow.runtime", "create_world": "graphflow.runtime",
+    "World": "graphflow.world", "NodeSpec": "graphflow.spec", "Attribute": "graphflow.spec",
+    "NodeDb": "graphflow.node_api", "NodeModule": "graphflow.node_api",
+    "CheckedRun": "graphflow.verdicts.checked_run", "Verdict": "graphflow.verdicts.checked_run",
+    "run_checked": "graphflow.verdicts.checked_run",
+    "NodeHarness": "graphflow.testing", "GraphHarness": "graphflow.testing",
+    "GraphflowError": "graphflow.errors", "BadInput": "graphflow.errors", "RunFailure": "graphflow.errors",
+}
+__all__ = sorted(_EXPORTS)
+
+
+def __getattr__(name: str):
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module 'graphflow' has no attribute {name!r}")
+    import importlib
+
+    return getattr(importlib.import_module(module), name)

@@ -20,11 +20,11 @@ from typing import Any
 
 import networkx as nx
 
-from .model import GraphDocument, GraphError, NodeDoc, Problem
-from .executor import CompiledGraph
-from .registry import Registry, default_registry
-from .spec import NodeType
-from .types import TypeMismatch, can_connect, parse_type
+from graphflow.compiled import CompiledGraph
+from graphflow.model import GraphDocument, GraphError, NodeDoc, Problem
+from graphflow.registry import Registry, default_registry
+from graphflow.spec import NodeType
+from graphflow.types import TypeMismatch, can_connect, parse_type
 
 __all__ = ["compile", "problems", "GraphError", "Problem"]
 
@@ -72,7 +72,7 @@ class _Compilation:
         pulls, exec_edges, data_graph = self._connections(node_types)
         if self.problems:
             raise GraphError(self.problems)
-        return CompiledGraph(document, self.registry, node_types=tuple(node_types), authored=tuple(authored),
+        return CompiledGraph(document, self.registry, node_types=tuple(t for t in node_types if t is not None), authored=tuple(authored),
                              pulls=pulls, exec_edges=exec_edges, data_graph=data_graph,
                              variable_types=variable_types, variable_defaults=variable_defaults)
 
@@ -183,7 +183,7 @@ class _Compilation:
         data_sources: dict[tuple[str, str], list[str]] = {}
         for connection in document.connections:
             label = f"{connection.src} -> {connection.dst}"
-            endpoints = []
+            endpoints: list[Any] = []
             for node_name, attr_name in ((connection.src_node, connection.src_attr),
                                          (connection.dst_node, connection.dst_attr)):
                 if node_name not in index_of:

@@ -16,10 +16,19 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from .model import (FORMAT_NAME, FORMAT_VERSION, Connection, GraphDocument, GraphError, NodeDoc, Problem,  # noqa: F401
-                    Variable, _frozen)
-from .files import FileProblem, read_json, write_text
-from .registry import Registry
+from graphflow.files import FileProblem, read_json, write_text
+from graphflow.model import (  # noqa: F401
+    FORMAT_NAME,
+    FORMAT_VERSION,
+    Connection,
+    GraphDocument,
+    GraphError,
+    NodeDoc,
+    Problem,
+    Variable,
+    frozen_mapping,
+)
+from graphflow.registry import Registry
 
 
 @lru_cache(maxsize=1)
@@ -61,20 +70,20 @@ def parse_document(data: Any, source: str = "<graph>", registry: Registry | None
     if major != FORMAT_VERSION[0]:
         raise GraphError([Problem(source, f"formatVersion {data['formatVersion']} is not supported (this runtime reads {FORMAT_VERSION[0]}.x)")])
     document = GraphDocument(
-        nodes=tuple(NodeDoc(n["name"], n["type"], n.get("typeVersion"), _frozen(n.get("inputs", {})),
+        nodes=tuple(NodeDoc(n["name"], n["type"], n.get("typeVersion"), frozen_mapping(n.get("inputs", {})),
                             n.get("description", "")) for n in data["nodes"]),
         connections=tuple(_parse_connection(c) for c in data.get("connections", [])),
         variables=tuple(Variable(v["name"], v["type"], v.get("default"), v.get("description", ""))
                         for v in data.get("variables", [])),
-        settings=_frozen(data.get("settings", {})),
+        settings=frozen_mapping(data.get("settings", {})),
         description=data.get("description", ""),
-        ui=_frozen(data.get("ui", {})),
+        ui=frozen_mapping(data.get("ui", {})),
         format_version=tuple(data["formatVersion"]),
         source=source,
-        checks=tuple(_frozen(check) for check in data.get("checks", [])),
-        scenario=_frozen(data.get("scenario", {})),
+        checks=tuple(frozen_mapping(check) for check in data.get("checks", [])),
+        scenario=frozen_mapping(data.get("scenario", {})),
     )
-    from .compiler import compile   # checking a document is compiling it
+    from graphflow.compiler import compile  # checking a document is compiling it
 
     compile(document, registry)
     return document
@@ -84,7 +93,7 @@ def _problems_of_valid_parts(data: Any, source: str, registry: Registry | None, 
     """Semantic problems of the entries the schema accepted, so one pass lists both kinds."""
     if not isinstance(data, dict) or not isinstance(data.get("nodes"), list):
         return []
-    from .compiler import problems
+    from graphflow.compiler import problems
 
     broken = {tuple(p.path[:2]) for p in schema_problems if len(p.path) >= 2}
     broken_sections = {p.path[0] for p in schema_problems if len(p.path) == 1}
@@ -99,11 +108,11 @@ def _problems_of_valid_parts(data: Any, source: str, registry: Registry | None, 
                if ("nodes", index) in broken and isinstance(entry, dict)}
     settings = data.get("settings", {})
     document = GraphDocument(
-        nodes=tuple(NodeDoc(n["name"], n["type"], n.get("typeVersion"), _frozen(n.get("inputs", {})))
+        nodes=tuple(NodeDoc(n["name"], n["type"], n.get("typeVersion"), frozen_mapping(n.get("inputs", {})))
                     for n in kept("nodes")),
         connections=tuple(_parse_connection(c) for c in kept("connections")),
         variables=tuple(Variable(v["name"], v["type"], v.get("default")) for v in kept("variables")),
-        settings=_frozen(settings if isinstance(settings, dict) and "settings" not in broken_sections
+        settings=frozen_mapping(settings if isinstance(settings, dict) and "settings" not in broken_sections
                          and not any(p.path[:1] == ("settings",) for p in schema_problems) else {}),
         source=source)
     return [problem for problem in problems(document, registry) if problem.node not in skipped]
@@ -146,4 +155,4 @@ def rebased(document: GraphDocument, path: str | os.PathLike) -> GraphDocument:
     if folder == document.base_dir:
         return document
     moved = Path(os.path.relpath(document.base_dir / stage, folder)).as_posix()
-    return replace(document, settings=_frozen({**document.settings, "stage": moved}), source=str(path))
+    return replace(document, settings=frozen_mapping({**document.settings, "stage": moved}), source=str(path))

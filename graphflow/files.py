@@ -23,11 +23,13 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, Iterator
 
+from graphflow.errors import BadInput
+
 MAX_INPUT_BYTES = 256 * 1024 * 1024
 MAX_JSON_DEPTH = 64      # graph documents nest about 5 levels; deeper input is an attack or a mistake
 
 
-class FileProblem(ValueError):
+class FileProblem(BadInput):
     """A file that cannot be read or written as asked; the message is one line naming it."""
 
     def __init__(self, file, reason: str):
@@ -234,3 +236,9 @@ def write_text(target, text: str, *, force: bool = False) -> None:
             stream.write(text)
             stream.flush()
             os.fsync(stream.fileno())
+
+
+def write_bytes(target, data: bytes, *, force: bool = False) -> None:
+    """Write *data* atomically to *target*; see ``atomic_output``."""
+    with atomic_output(target, force=force) as temporary:
+        temporary.write_bytes(data)

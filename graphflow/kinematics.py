@@ -14,7 +14,7 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Sequence
 
-from .poses import quat_matrix, quat_normalize
+from graphflow.poses import quat_matrix, quat_normalize
 
 if TYPE_CHECKING:
     import numpy as np
@@ -180,7 +180,9 @@ class _Link:
         axis = tuple(float(c) / norm for c in joint.axis)
         principal = axis.index(1.0) if axis in ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)) else None
         rotation = None if tuple(joint.rpy) == (0.0, 0.0, 0.0) else _rpy_rotation(joint.rpy)
-        return cls(tuple(float(c) for c in joint.xyz), rotation, axis, principal)
+        x, y, z = (float(c) for c in joint.xyz)
+        ax, ay, az = axis
+        return cls((x, y, z), rotation, (ax, ay, az), principal)
 
 
 _IDENTITY = (1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0)
@@ -215,7 +217,8 @@ def _rpy_rotation(rpy) -> tuple[float, ...]:
 
 def _quaternion_rotation(quaternion) -> tuple[float, ...]:
     """The rotation matrix of a quaternion (x, y, z, w; normalised here), row-major."""
-    return quat_matrix(quat_normalize(tuple(float(c) for c in quaternion)))
+    x, y, z, w = (float(c) for c in quaternion)
+    return quat_matrix(quat_normalize((x, y, z, w)))
 
 
 def _multiply(a, b) -> tuple[float, ...]:
@@ -250,7 +253,7 @@ def _turn(r, link: _Link, angle: float) -> tuple[float, ...]:
 
 def _jacobian_columns(tool, origins, axes) -> list[tuple[float, ...]]:
     """Per joint: (axis x (tool - joint origin), axis), the tool's linear and angular velocity per unit rate."""
-    columns = []
+    columns: list[tuple[float, ...]] = []
     for (ox, oy, oz), (ax, ay, az) in zip(origins, axes):
         rx, ry, rz = tool[0] - ox, tool[1] - oy, tool[2] - oz
         columns.append((ay * rz - az * ry, az * rx - ax * rz, ax * ry - ay * rx, ax, ay, az))
@@ -261,10 +264,10 @@ def _damped_least_squares_step(columns, error, damping: float) -> list[float]:
     """x with (J^T J + damping I) x = J^T e, J's columns given: Cholesky of the normal matrix, built row by row
     as it is factored (the damped normal matrix is symmetric positive definite). Plain floats: numpy's
     per-call overhead exceeds the arithmetic of a 6 x 6 solve."""
-    lower = []
+    lower: list[list[float]] = []
     for i, a in enumerate(columns):
         a0, a1, a2, a3, a4, a5 = a
-        row = []
+        row: list[float] = []
         for j in range(i):
             b, other = columns[j], lower[j]
             total = a0 * b[0] + a1 * b[1] + a2 * b[2] + a3 * b[3] + a4 * b[4] + a5 * b[5]
@@ -277,7 +280,7 @@ def _damped_least_squares_step(columns, error, damping: float) -> list[float]:
         row.append(math.sqrt(total))
         lower.append(row)
     e0, e1, e2, e3, e4, e5 = error
-    y = []
+    y: list[float] = []
     for i, (a0, a1, a2, a3, a4, a5) in enumerate(columns):
         total = a0 * e0 + a1 * e1 + a2 * e2 + a3 * e3 + a4 * e4 + a5 * e5
         row = lower[i]

@@ -15,7 +15,7 @@ _PXR_NAMESPACE = re.compile(r"pxrInternal_\w+?__pxrReserved__::")
 
 
 
-def usd_message(error) -> str:
+def usd_message(error: object) -> str:
     """An error's text on one line; for usd-core's errors the first message, without its C++ source
     location and internal namespace names. Other text is only joined onto one line."""
     text = " ".join(str(error).split())

@@ -11,7 +11,8 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
 
-from .files import one_line
+from graphflow.errors import BadInput
+from graphflow.files import one_line
 
 FORMAT_NAME = "graphflow"
 FORMAT_VERSION = (1, 0)
@@ -39,7 +40,7 @@ class Problem:
         return one_line(f"{self.file}: {self.message}")
 
 
-class GraphError(ValueError):
+class GraphError(BadInput):
     """A graph file could not be loaded; ``problems`` lists every reason."""
 
     def __init__(self, problems: list[Problem]):
@@ -47,7 +48,7 @@ class GraphError(ValueError):
         super().__init__("\n".join(str(p) for p in problems))
 
 
-def _frozen(mapping: Mapping) -> Mapping:
+def frozen_mapping(mapping: Mapping) -> Mapping:
     return MappingProxyType(dict(mapping))
 
 
@@ -96,7 +97,7 @@ class GraphDocument:
     ui: Mapping[str, Any] = field(default_factory=dict)
     format_version: tuple[int, int] = FORMAT_VERSION
     source: str = "<graph>"   # the file it came from, for messages and relative stage paths
-    checks: tuple[Mapping[str, Any], ...] = ()   # what must be true of a run (graphflow.checks, docs/checks.md)
+    checks: tuple[Mapping[str, Any], ...] = ()   # what must be true of a run (graphflow.verdicts.checks, docs/checks.md)
     scenario: Mapping[str, Any] = field(default_factory=dict)   # scripted inputs of a checked run (keys, gamepad)
     # its compiled graph per registry id, kept by graphflow.compiler.compile (derived, not part of the definition)
     _compiled: dict = field(default_factory=dict, init=False, repr=False, compare=False)

@@ -14,7 +14,7 @@ import pkgutil
 from importlib.metadata import entry_points
 from types import ModuleType
 
-from .spec import NodeType
+from graphflow.spec import NodeType
 
 ENTRY_POINT_GROUP = "graphflow.nodes"
 log = logging.getLogger(__name__)

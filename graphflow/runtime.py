@@ -10,11 +10,13 @@ import os
 from dataclasses import dataclass
 from typing import Any, Callable, Iterable, Protocol
 
-from .compiler import compile as compile_graph   # one compiled graph per document and registry, shared
-from .document import GraphDocument, load_document
-from .executor import GraphInstance
-from .registry import Registry
-from .world import DEFAULT_TIME_STEP, ClockWorld, World
+from graphflow.compiler import (
+    compile as compile_graph,  # one compiled graph per document and registry, shared
+)
+from graphflow.document import GraphDocument, load_document
+from graphflow.executor import GraphInstance
+from graphflow.registry import Registry
+from graphflow.world import DEFAULT_TIME_STEP, ClockWorld, World
 
 
 @dataclass(frozen=True)
@@ -33,10 +35,13 @@ def create_world(stage=None, *, time_step: float | None = None, substeps: int | 
     """
     if stage is None:
         return ClockWorld(DEFAULT_TIME_STEP if time_step is None else time_step)
-    from . import physics  # only here: core-only graphs never import pybullet or pxr
+    from graphflow import (
+        physics,  # only here: core-only graphs never import pybullet or pxr
+    )
+    from graphflow.usd.resolver import resolve_stage
 
     if isinstance(stage, (str, os.PathLike)):
-        stage = physics.resolve_stage(os.fspath(stage), base_dir)
+        stage = resolve_stage(os.fspath(stage), base_dir)
     return physics.create_world(stage, time_step=time_step, substeps=substeps, gui=gui)
 
 
@@ -78,7 +83,7 @@ class Simulation:
         self._tick_listeners: tuple[Callable[[Simulation, int], None], ...] = tuple(
             listener.on_tick for listener in self.listeners if getattr(listener, "on_tick", None) is not None)
         self.instances: list[GraphInstance] = [
-            self.compiled.instantiate(self.world, listeners=self.listeners) for _ in range(instances)]
+            GraphInstance(self.compiled, self.world, listeners=self.listeners) for _ in range(instances)]
 
     @classmethod
     def load(cls, path, **options) -> "Simulation":

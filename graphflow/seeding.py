@@ -3,6 +3,8 @@ from __future__ import annotations
 
 import random
 import sys
+from importlib.machinery import ModuleSpec
+from typing import Any
 
 
 def seed_everything(seed: int) -> None:
@@ -24,7 +26,7 @@ class _SeedNumpyOnImport:
     def __init__(self, seed: int):
         self.seed = seed
 
-    def find_spec(self, fullname, path=None, target=None):
+    def find_spec(self, fullname: str, path: object = None, target: object = None) -> ModuleSpec | None:
         if fullname != "numpy.random":
             return None
         sys.meta_path.remove(self)
@@ -34,11 +36,11 @@ class _SeedNumpyOnImport:
         if spec is not None and spec.loader is not None:
             exec_module, seed = spec.loader.exec_module, self.seed
 
-            def exec_and_seed(module):
+            def exec_and_seed(module: Any) -> None:
                 exec_module(module)
                 module.seed(seed)
 
-            spec.loader.exec_module = exec_and_seed
+            spec.loader.exec_module = exec_and_seed  # type: ignore[method-assign]  # seeding as numpy.random loads
         return spec
 
 

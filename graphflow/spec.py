@@ -17,7 +17,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-from .types import AttrType, TypeMismatch, parse_type
+from graphflow.types import AttrType, TypeMismatch, parse_type
 
 
 @dataclass(frozen=True)
@@ -111,7 +111,7 @@ class NodeSpec:
     aliases: tuple[str, ...] = ()       # legacy ids that load as this type
     ui_name: str = ""
     compatible_versions: tuple[int, ...] = ()  # older typeVersions files may name
-    _by_name: dict = field(default=None, init=False, repr=False, compare=False)
+    _by_name: dict | None = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self):
         lookup = {}
@@ -123,7 +123,7 @@ class NodeSpec:
 
     def attribute(self, qualified_name: str) -> Attribute | None:
         """Look up ``inputs:x`` / ``outputs:y`` / ``state:z``."""
-        return self._by_name.get(qualified_name)
+        return self._by_name.get(qualified_name) if self._by_name is not None else None
 
     @property
     def exec_inputs(self) -> tuple[Attribute, ...]:

@@ -144,7 +144,7 @@ def _coerce_scalar(kind: str, name: str, value):
             value = int(value)
         if isinstance(value, int) and not isinstance(value, bool):
             low, high = INTEGER_RANGES.get(name, (None, None))
-            if low is not None and not low <= value <= high:
+            if low is not None and high is not None and not low <= value <= high:
                 raise TypeMismatch(f"expected {name} ({low} to {high}), got {_show(value)}")
             return value
     elif kind == "real":

@@ -6,7 +6,7 @@ the surface gripper and the input services need to read and act on prims.
 gripper makes), with the plain data types that cross the seam (``RayHit``,
 ``Contact``, ``AxisCompliance``), without importing any physics engine.
 Implementations: ``graphflow.physics.PyBulletWorld`` (PyBullet, from a USD
-stage), ``graphflow.testing_backend.FakeWorld`` (kinematic boxes, for tests)
+stage), ``graphflow.testing.fake_world.FakeWorld`` (kinematic boxes, for tests)
 and ``ClockWorld`` below (graphs that name no stage: every physics query raises
 ``WorldError``).
 
@@ -20,9 +20,20 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Any, Callable, Hashable, Mapping, NamedTuple, Protocol, Sequence, TypeVar, runtime_checkable
+from typing import (
+    Any,
+    Callable,
+    Hashable,
+    Mapping,
+    NamedTuple,
+    Protocol,
+    Sequence,
+    TypeVar,
+    runtime_checkable,
+)
 
-from .poses import Pose, Vec3
+from graphflow.errors import RunFailure
+from graphflow.poses import Pose, Vec3
 
 ServiceT = TypeVar("ServiceT")
 
@@ -48,7 +59,7 @@ class Services:
     """
 
     def __init__(self):
-        self._by_kind: dict[type, WorldService] = {}
+        self._by_kind: dict[type, Any] = {}
 
     def add(self, service: ServiceT, kind: type | None = None) -> ServiceT:
         """Add *service* as the world's one service of *kind* (default: its class), replacing any earlier one."""
@@ -79,7 +90,7 @@ class Services:
             service.reset()
 
 
-class WorldError(RuntimeError):
+class WorldError(RunFailure):
     """A node asked the world for something it cannot do (unknown prim, bad attribute, ...)."""
 
 
@@ -248,7 +259,7 @@ def on_nearest_ancestor(path: str, query: Callable[[str], ServiceT]) -> tuple[st
         except WorldError as error:
             refusal = refusal or error
         candidate = candidate.rsplit("/", 1)[0]
-    raise refusal
+    raise refusal if refusal is not None else WorldError(f"{path}: no prim")
 
 
 class ClockWorld:
@@ -263,7 +274,7 @@ class ClockWorld:
         self.services = Services()
 
     stage = None                                    # no stage,
-    attachments = None                              # no bodies to attach,
+    attachments: Attachments | None = None          # no bodies to attach,
     attachment_joints: Mapping[str, Any] = MappingProxyType({})    # no attachment joints
 
     def step(self) -> None:

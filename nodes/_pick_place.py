@@ -11,9 +11,9 @@ from __future__ import annotations
 
 import math
 
+from graphflow.poses import relative
 from graphflow.spec import Attribute
 from graphflow.types import ExecState
-from graphflow.poses import relative
 from graphflow.world import WorldError
 
 UR10_EVENTS_DT = (0.01, 0.0035, 0.01, 1.0, 0.008, 0.005, 0.005, 1.0, 0.01, 0.08)

@@ -11,7 +11,6 @@ import math
 from graphflow.spec import Attribute
 
 
-
 def common_inputs(topic: str, *, exec_description: str) -> tuple[Attribute, ...]:
     """Isaac's inputs on every publisher and subscriber: execIn, context, nodeNamespace, qosProfile, queueSize, topicName."""
     return (

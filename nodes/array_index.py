@@ -1,6 +1,5 @@
 """omni.graph.nodes.ArrayIndex: one element of an array."""
 from graphflow.spec import Attribute, NodeSpec
-
 from graphflow_nodes._math import plain
 
 SPEC = NodeSpec(

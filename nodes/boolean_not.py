@@ -1,6 +1,5 @@
 """omni.graph.nodes.BooleanNot: logical not, elementwise."""
 from graphflow.spec import Attribute, NodeSpec
-
 from graphflow_nodes._math import MathError, elementwise, is_boolean
 
 SPEC = NodeSpec(

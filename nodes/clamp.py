@@ -1,6 +1,5 @@
 """omni.graph.nodes.Clamp: limit a value to [lower, upper], elementwise."""
 from graphflow.spec import Attribute, NodeSpec
-
 from graphflow_nodes._math import MathError, elementwise, require
 
 SPEC = NodeSpec(

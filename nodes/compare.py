@@ -1,6 +1,5 @@
 """omni.graph.nodes.Compare: compare a and b with an operator token."""
 from graphflow.spec import Attribute, NodeSpec
-
 from graphflow_nodes._math import COMPARISONS, MathError, elementwise, is_number, require
 
 SPEC = NodeSpec(

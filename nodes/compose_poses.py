@@ -1,6 +1,6 @@
 """graphflow.ComposePoses: a pose given in a parent frame, expressed in the world (parent * child)."""
-from graphflow.spec import Attribute, NodeSpec
 from graphflow.poses import compose, quat_normalize
+from graphflow.spec import Attribute, NodeSpec
 
 SPEC = NodeSpec(
     id="graphflow.ComposePoses",

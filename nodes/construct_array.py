@@ -1,7 +1,6 @@
 """omni.graph.nodes.ConstructArray: build an array from input0..input{arraySize-1}."""
 from graphflow.spec import Attribute, NodeSpec
 from graphflow.types import TypeMismatch, element_type, parse_type
-
 from graphflow_nodes._math import plain
 
 MAX_INPUTS = 32

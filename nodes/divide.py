@@ -1,6 +1,5 @@
 """omni.graph.nodes.Divide: a / b, elementwise."""
 from graphflow.spec import Attribute, NodeSpec
-
 from graphflow_nodes._math import compute_binary, divide
 
 SPEC = NodeSpec(

@@ -1,6 +1,5 @@
 """omni.graph.nodes.Minimum: the smaller of a and b, elementwise."""
 from graphflow.spec import Attribute, NodeSpec
-
 from graphflow_nodes._math import compute_binary
 
 SPEC = NodeSpec(

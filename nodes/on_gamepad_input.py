@@ -1,11 +1,11 @@
 """omni.graph.action.OnGamepadInput: fire on a gamepad button press and on its release.
 
-Pad values come from the world's gamepad (``graphflow.gamepad``): a scripted
+Pad values come from the world's gamepad (``graphflow.inputs.gamepad``): a scripted
 timeline headless (``--gamepad`` / ``--pad``), else one neutral pad. A button
 counts as down while its value is at least 0.5, so an analog button crossing
 the threshold presses once and releases once.
 """
-from graphflow.gamepad import BUTTONS, PRESS_THRESHOLD, gamepad_for
+from graphflow.inputs.gamepad import BUTTONS, PRESS_THRESHOLD, gamepad_for
 from graphflow.spec import Attribute, NodeSpec
 from graphflow.types import ExecState
 

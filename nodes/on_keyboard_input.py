@@ -1,6 +1,6 @@
 """omni.graph.action.OnKeyboardInput: fire on a key press and on its release.
 
-Keys come from the world's keyboard (``graphflow.keyboard``): the PyBullet
+Keys come from the world's keyboard (``graphflow.inputs.keyboard``): the PyBullet
 window with ``--gui``, a scripted timeline headless (``--keys`` / ``--key``).
 
 Modifier rule (Kit's source is closed; reference §6.2 leaves it open): the
@@ -8,7 +8,7 @@ modifiers must match exactly. An unrequested Shift, Ctrl or Alt held at the
 moment the key goes down blocks the press, so bindings for ``A`` and
 ``Shift+A`` never both fire. Left and right variants count the same.
 """
-from graphflow.keyboard import KEY_TOKENS, MODIFIER_KEYS, keyboard_for
+from graphflow.inputs.keyboard import KEY_TOKENS, MODIFIER_KEYS, keyboard_for
 from graphflow.spec import Attribute, NodeSpec
 from graphflow.types import ExecState
 

@@ -8,8 +8,16 @@ phase machine, so pulsing execIn every tick does not double the speed.
 """
 from graphflow.spec import Attribute, NodeSpec
 
-from ._pick_place import (COMMON_INPUTS, COMMON_OUTPUTS, COMMON_STATE, MOTION_INPUTS, controller_idle,
-                          events_dt_problems, new_run, run_controller)
+from ._pick_place import (
+    COMMON_INPUTS,
+    COMMON_OUTPUTS,
+    COMMON_STATE,
+    MOTION_INPUTS,
+    controller_idle,
+    events_dt_problems,
+    new_run,
+    run_controller,
+)
 
 SPEC = NodeSpec(
     id="graphflow.PickPlaceController",

@@ -11,11 +11,22 @@ next task starts in the tick the previous one ends.
 """
 import math
 
-from graphflow.spec import Attribute, NodeSpec
 from graphflow.poses import quat_from_axis_angle, quat_multiply
+from graphflow.spec import Attribute, NodeSpec
 
-from ._pick_place import (CLOSE_EVENT, COMMON_INPUTS, COMMON_OUTPUTS, COMMON_STATE, DONE, MOTION_INPUTS, mix,
-                          controller_idle, events_dt_problems, new_run, run_controller)
+from ._pick_place import (
+    CLOSE_EVENT,
+    COMMON_INPUTS,
+    COMMON_OUTPUTS,
+    COMMON_STATE,
+    DONE,
+    MOTION_INPUTS,
+    controller_idle,
+    events_dt_problems,
+    mix,
+    new_run,
+    run_controller,
+)
 
 MOVE_TO_PLACE = 5
 

@@ -1,8 +1,8 @@
 """graphflow.QuaternionToEuler: a quaternion (x, y, z, w) to roll, pitch, yaw (radians)."""
 import math
 
-from graphflow.spec import Attribute, NodeSpec
 from graphflow.poses import quat_normalize
+from graphflow.spec import Attribute, NodeSpec
 
 SPEC = NodeSpec(
     id="graphflow.QuaternionToEuler",

@@ -1,10 +1,10 @@
 """omni.graph.nodes.ReadGamepadState: one gamepad element's value this tick.
 
-Reads the world's gamepad (``graphflow.gamepad``), polled once per physics
+Reads the world's gamepad (``graphflow.inputs.gamepad``), polled once per physics
 step, so every reader in a tick sees the same pad. Values inside the deadzone
 read 0, so a resting stick does not drift what it drives.
 """
-from graphflow.gamepad import BUTTONS, ELEMENTS, PRESS_THRESHOLD, gamepad_for
+from graphflow.inputs.gamepad import BUTTONS, ELEMENTS, PRESS_THRESHOLD, gamepad_for
 from graphflow.spec import Attribute, NodeSpec
 
 SPEC = NodeSpec(

@@ -1,6 +1,6 @@
 """omni.graph.nodes.RotateVector: a direction vector turned by a quaternion (x, y, z, w)."""
-from graphflow.spec import Attribute, NodeSpec
 from graphflow.poses import quat_normalize, quat_rotate
+from graphflow.spec import Attribute, NodeSpec
 
 SPEC = NodeSpec(
     id="omni.graph.nodes.RotateVector",

@@ -7,8 +7,17 @@ done the next starts in the same tick.
 """
 from graphflow.spec import Attribute, NodeSpec
 
-from ._pick_place import (COMMON_INPUTS, COMMON_OUTPUTS, COMMON_STATE, DONE, MOTION_INPUTS, controller_idle,
-                          events_dt_problems, new_run, run_controller)
+from ._pick_place import (
+    COMMON_INPUTS,
+    COMMON_OUTPUTS,
+    COMMON_STATE,
+    DONE,
+    MOTION_INPUTS,
+    controller_idle,
+    events_dt_problems,
+    new_run,
+    run_controller,
+)
 
 SPEC = NodeSpec(
     id="graphflow.StackingController",

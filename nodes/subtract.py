@@ -2,7 +2,6 @@
 import operator
 
 from graphflow.spec import Attribute, NodeSpec
-
 from graphflow_nodes._math import compute_binary
 
 SPEC = NodeSpec(

@@ -4,7 +4,6 @@ Key and button states are bools; the math nodes take numbers only, so a graph
 that scales a held key into a motion (the keyboard gantry) converts it here.
 """
 from graphflow.spec import Attribute, NodeSpec
-
 from graphflow_nodes._math import MathError, elementwise, is_boolean, is_number
 
 SPEC = NodeSpec(

@@ -60,12 +60,60 @@ def test_no_import_cycle_between_packages_and_modules():
     assert cycles == [], described
 
 
+def _module_graph() -> nx.DiGraph:
+    """Module-level imports (``graphflow.validate.preflight`` -> ``graphflow.usd.resolver``), lazy ones included."""
+    modules = {_module_name(path) for path in PACKAGE.rglob("*.py")}
+    graph = nx.DiGraph()
+    for path in PACKAGE.rglob("*.py"):
+        source = _module_name(path)
+        graph.add_node(source)
+        for module, line in _imports(path):
+            while module and module not in modules:   # "graphflow.usd.resolver.resolve_stage" -> the module
+                module = module.rpartition(".")[0]
+            if module and module != source:
+                graph.add_edge(source, module, where=f"{path.relative_to(ROOT)}:{line}")
+    return graph
+
+
+def _reaches_physics(graph: nx.DiGraph, module: str) -> bool:
+    return any(reached.startswith("graphflow.physics") for reached in nx.descendants(graph, module))
+
+
 def test_the_core_and_the_gripper_stand_on_the_world_interface_not_on_physics():
     graph = _unit_graph()
-    for unit in ("graphflow.world", "graphflow.poses", "graphflow.gripper", "graphflow.testing_backend"):
+    for unit in ("graphflow.world", "graphflow.poses", "graphflow.gripper"):
         reached = nx.descendants(graph, unit)
         assert "graphflow.physics" not in reached, f"{unit} reaches graphflow.physics"
     assert graph.has_edge("graphflow.physics", "graphflow.world")     # the backend implements the interface
+    assert not _reaches_physics(_module_graph(), "graphflow.testing.fake_world")
+
+
+APPLICATIONS = ("cli", "verdicts", "validate", "observe", "inputs", "testing", "catalog", "sweep", "variants")
+
+
+def test_the_engine_imports_no_application_folder():
+    """Flat modules are the engine: they may be used by the applications, never the other way round."""
+    graph = _unit_graph()
+    engine = [f"graphflow.{path.stem}" for path in PACKAGE.glob("*.py") if path.stem not in ("__init__", "__main__")]
+    for module in engine:
+        reached = {unit.split(".")[1] for unit in nx.descendants(graph, module) if unit.count(".") == 1}
+        assert not reached & set(APPLICATIONS), f"{module} reaches {sorted(reached & set(APPLICATIONS))}"
+
+
+def test_validate_and_usd_never_reach_physics():
+    """``graphflow validate`` and the USD side read stages with usd-core alone: no PyBullet, no physics world."""
+    graph = _module_graph()
+    for module in graph.nodes:
+        if module.startswith(("graphflow.validate", "graphflow.usd")):
+            assert not _reaches_physics(graph, module), f"{module} reaches graphflow.physics"
+
+
+def test_every_application_folder_is_one_package_and_no_module_is_over_500_lines():
+    for folder in APPLICATIONS:
+        assert (PACKAGE / folder / "__init__.py").is_file(), folder
+    long = [f"{path.relative_to(ROOT)}: {n}" for path in [*PACKAGE.rglob("*.py"), *(ROOT / "nodes").rglob("*.py")]
+            if (n := len(path.read_text(encoding="utf-8").splitlines())) > 500]
+    assert long == []
 
 
 def test_only_graphflow_physics_imports_pybullet():

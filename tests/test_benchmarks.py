@@ -62,7 +62,7 @@ def test_unknown_benchmark_is_a_usage_error():
 
 def test_plain_pybullet_baseline_does_the_whole_pick_and_place():
     """The raw-PyBullet baseline is the same job, not a cheaper one: it carries the cube to the place target."""
-    from benchmarks.plain_pybullet import PLACE, CUBE_START, PlainPickPlace
+    from benchmarks.plain_pybullet import CUBE_START, PLACE, PlainPickPlace
 
     plain = PlainPickPlace(time_step=1 / 60, substeps=1, solver_iterations=50, solver_residual=3e-7)
     try:

@@ -3,10 +3,10 @@ import math
 
 import pytest
 
-from graphflow.checks import CheckEvaluator
 from graphflow.document import GraphError, parse_document
 from graphflow.gripper.manager import SurfaceGripperManager
 from graphflow.runtime import Simulation
+from graphflow.verdicts.checks import CheckEvaluator
 from graphflow.world import ClockWorld
 
 STEP = 0.1

@@ -7,9 +7,8 @@ import pytest
 from conftest import ROOT
 
 
-
 def graphflow(*args, cwd=None):
-    return subprocess.run([sys.executable, "-m", "graphflow.cli", *args], capture_output=True, text=True, cwd=cwd)
+    return subprocess.run([sys.executable, "-m", "graphflow", *args], capture_output=True, text=True, cwd=cwd)
 
 
 def test_core_demo_prints_its_lines_and_stops_on_its_own():
@@ -127,15 +126,15 @@ def test_missing_stage_is_one_line_on_stderr(tmp_path):
 def test_gui_pacer_waits_for_simulated_time_only_when_ahead(monkeypatch):
     from types import SimpleNamespace
 
-    from graphflow import cli
+    from graphflow.observe import terminal
 
     clock = [100.0]
     slept = []
-    monkeypatch.setattr(cli.time, "perf_counter", lambda: clock[0])
-    monkeypatch.setattr(cli.time, "sleep", slept.append)
+    monkeypatch.setattr(terminal.time, "perf_counter", lambda: clock[0])
+    monkeypatch.setattr(terminal.time, "sleep", slept.append)
     world = SimpleNamespace(time=0.0)
     simulation = SimpleNamespace(world=world)
-    pacer = cli._RealTimePacer(speed=2.0)
+    pacer = terminal.RealTimePacer(speed=2.0)
     world.time, clock[0] = 1.0, 100.1        # 1 s simulated at 2x = 0.5 s of wall time; 0.1 s went by
     pacer.on_tick(simulation, 1)
     world.time, clock[0] = 1.5, 101.0        # behind: no wait
@@ -145,7 +144,7 @@ def test_gui_pacer_waits_for_simulated_time_only_when_ahead(monkeypatch):
 
 @pytest.mark.skipif(__import__("shutil").which("xvfb-run") is None, reason="needs xvfb-run for a virtual display")
 def test_gui_run_opens_the_window_and_keeps_stdout_for_the_graph():
-    result = subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 800x600x24", sys.executable, "-m", "graphflow.cli",
+    result = subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 800x600x24", sys.executable, "-m", "graphflow",
                              "run", str(ROOT / "graphs" / "ur10_pick_place.json"), "--gui", "--speed", "0", "--seconds", "2"],
                             capture_output=True, text=True, timeout=120)
     assert result.returncode == 0, result.stderr[-2000:]

@@ -3,7 +3,13 @@ import pytest
 
 import graphflow_nodes
 from graphflow.compiler import compile
-from graphflow.document import Connection, GraphDocument, GraphError, NodeDoc, parse_document
+from graphflow.document import (
+    Connection,
+    GraphDocument,
+    GraphError,
+    NodeDoc,
+    parse_document,
+)
 from graphflow.registry import Registry
 from graphflow.runtime import Simulation
 

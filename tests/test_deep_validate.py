@@ -3,9 +3,10 @@ import json
 import subprocess
 import sys
 
-from graphflow.deep_validate import deep_validate
-from graphflow.document import load_document
 from conftest import ROOT
+
+from graphflow.document import load_document
+from graphflow.validate.stage_names import deep_validate
 
 PICK_PLACE = ROOT / "graphs" / "ur10_pick_place.json"
 
@@ -89,7 +90,7 @@ def test_validate_command_missing_stage_and_usd_syntax_error_without_running(tmp
     broken_stage = tmp_path / "broken.usda"
     broken_stage.write_text('#usda 1.0\n\ndef Xform "World"\n{\n    double3 xformOp:translate = (0, 0,\n}\n')
     broken = _variant(tmp_path, lambda g: g["settings"].update(stage="broken.usda"), "broken.json")
-    result = subprocess.run([sys.executable, "-m", "graphflow.cli", "validate", str(missing), str(broken), str(PICK_PLACE)],
+    result = subprocess.run([sys.executable, "-m", "graphflow", "validate", str(missing), str(broken), str(PICK_PLACE)],
                             capture_output=True, text=True)
     assert result.returncode == 2
     assert result.stdout.splitlines() == [f"{PICK_PLACE}: ok"]
@@ -98,7 +99,7 @@ def test_validate_command_missing_stage_and_usd_syntax_error_without_running(tmp
     assert broken_line.startswith(f"{broken}: settings/stage: {broken_stage}: not a USD stage ({broken_stage}:6:1: ")
     assert "at '}' in </World.xformOp:translate>" in broken_line and "pxrInternal" not in broken_line
     loaded = subprocess.run(        # usd-core only: validating never loads the physics engine
-        [sys.executable, "-c", "import sys; from graphflow.deep_validate import deep_validate; "
+        [sys.executable, "-c", "import sys; from graphflow.validate.stage_names import deep_validate; "
                                "from graphflow.document import load_document; "
                                f"deep_validate(load_document({str(PICK_PLACE)!r})); "
                                "print(sorted(m for m in sys.modules if 'bullet' in m))"],
@@ -108,7 +109,7 @@ def test_validate_command_missing_stage_and_usd_syntax_error_without_running(tmp
 
 def test_an_unknown_input_name_gets_did_you_mean(tmp_path):
     path = _variant(tmp_path, lambda g: _node(g, "pick_place")["inputs"].update(placingPositon=[0, 0, 0]))
-    result = subprocess.run([sys.executable, "-m", "graphflow.cli", "validate", str(path)], capture_output=True, text=True)
+    result = subprocess.run([sys.executable, "-m", "graphflow", "validate", str(path)], capture_output=True, text=True)
     assert result.returncode == 2
     assert result.stderr.strip() == (f"{path}: node 'pick_place' input 'inputs:placingPositon': graphflow.PickPlaceController "
                                      "has no such input (did you mean 'placingPosition'?)")
@@ -128,7 +129,10 @@ def test_a_robot_from_a_reference_that_does_not_open_is_named_as_the_likely_caus
 
 
 def test_the_attributes_validation_accepts_are_the_worlds():
-    from graphflow.deep_validate import WORLD_BODY_ATTRIBUTES, WORLD_JOINT_ATTRIBUTES
     from graphflow.physics import ATTRIBUTES
+    from graphflow.validate.stage_names import (
+        WORLD_BODY_ATTRIBUTES,
+        WORLD_JOINT_ATTRIBUTES,
+    )
 
     assert sorted(WORLD_BODY_ATTRIBUTES + WORLD_JOINT_ATTRIBUTES) == sorted(ATTRIBUTES)

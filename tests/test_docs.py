@@ -1,5 +1,6 @@
 """The documents in the repository state their facts: none cites a file outside the repository."""
 import re
+
 from conftest import ROOT
 
 OUTSIDE = re.compile(r"/work/|shared/reference|\.\./shared")

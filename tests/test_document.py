@@ -3,10 +3,16 @@ import json
 import os
 
 import pytest
-
-from graphflow.document import GraphError, dumps, json_schema, load_document, parse_document, save_document
 from conftest import GRAPHS
 
+from graphflow.document import (
+    GraphError,
+    dumps,
+    json_schema,
+    load_document,
+    parse_document,
+    save_document,
+)
 
 
 def _document(nodes, connections=(), **extra):

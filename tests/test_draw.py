@@ -5,11 +5,11 @@ import sys
 import xml.etree.ElementTree as ElementTree
 
 import pytest
-
-from graphflow import draw
-from graphflow.document import load_document
-from graphflow.testing import GraphHarness
 from conftest import ROOT
+
+from graphflow.document import load_document
+from graphflow.observe import draw
+from graphflow.testing import GraphHarness
 
 COUNTER_GRAPH = ROOT / "graphs" / "counter_branch_print.json"
 SVG = "{http://www.w3.org/2000/svg}"
@@ -23,7 +23,7 @@ NODES = ["on_tick", "counter", "at_least_three", "branch", "format_count", "prin
 
 
 def graphflow(*args):
-    return subprocess.run([sys.executable, "-m", "graphflow.cli", *args], capture_output=True, text=True)
+    return subprocess.run([sys.executable, "-m", "graphflow", *args], capture_output=True, text=True)
 
 
 def test_columns_follow_execution_with_pure_nodes_between_producer_and_consumer():

@@ -2,12 +2,12 @@
 import sys
 import types
 
-import graphflow_nodes
 import pytest
 
-from graphflow.document import parse_document
+import graphflow_nodes
 from graphflow.compiler import compile
-from graphflow.executor import GraphRuntimeError, StepBudgetExceeded
+from graphflow.document import parse_document
+from graphflow.executor import GraphInstance, GraphRuntimeError, StepBudgetExceeded
 from graphflow.registry import Registry, default_registry
 from graphflow.spec import Attribute, NodeSpec
 from graphflow.testing import GraphHarness
@@ -64,7 +64,7 @@ def test_sequence_runs_a_downstream_completely_before_b():
          {"name": "b1", "type": "test.Record", "inputs": {"label": "b1"}}],
         [_conn("tick.outputs:tick", "seq.inputs:execIn"), _conn("seq.outputs:a", "a1.inputs:execIn"),
          _conn("a1.outputs:execOut", "a2.inputs:execIn"), _conn("seq.outputs:b", "b1.inputs:execIn")], registry)
-    instance = compile(document, registry).instantiate()
+    instance = GraphInstance(compile(document, registry))
     instance.tick()
     assert record == ["a1", "a2", "b1"]
 
@@ -80,7 +80,7 @@ def test_fan_out_runs_in_connection_order_and_fan_in_fires_once_per_pulse():
         [_conn("tick.outputs:tick", "first.inputs:execIn"), _conn("tick.outputs:tick", "second.inputs:execIn"),
          _conn("first.outputs:execOut", "join.inputs:execIn"), _conn("second.outputs:execOut", "join.inputs:execIn")],
         registry)
-    instance = compile(document, registry).instantiate()
+    instance = GraphInstance(compile(document, registry))
     instance.tick()
     assert record == ["first", "join", "second", "join"]
 
@@ -99,7 +99,7 @@ def test_diamond_pulls_its_top_once_per_tick():
          _conn("top.outputs:value", "left.inputs:a"), _conn("top.outputs:value", "right.inputs:a"),
          _conn("left.outputs:sum", "join.inputs:a"), _conn("right.outputs:sum", "join.inputs:b"),
          _conn("join.outputs:sum", "out.inputs:value")], registry)
-    instance = compile(document, registry).instantiate()
+    instance = GraphInstance(compile(document, registry))
     instance.tick()
     instance.tick()
     assert record == ["source computed", "out", "source computed", "out"]
@@ -121,7 +121,7 @@ def test_pure_node_recomputes_when_an_exec_source_changes_within_a_tick():
          _conn("loop.outputs:loopBody", "body.inputs:execIn"), _conn("loop.outputs:element", "double.inputs:a"),
          _conn("double.outputs:product", "body.inputs:value")], registry)
     seen = []
-    instance = compile(document, registry).instantiate(listeners=[types.SimpleNamespace(
+    instance = GraphInstance(compile(document, registry), listeners=[types.SimpleNamespace(
         on_compute=lambda instance, name, fired, db: seen.append(db.inputs.value) if name == "body" else None)])
     instance.tick()
     assert seen == [2.0, 4.0, 6.0]
@@ -201,7 +201,7 @@ def test_reset_returns_to_the_initial_state():
 def test_one_document_instanced_side_by_side_keeps_separate_state():
     document = parse_document({"format": "graphflow", "formatVersion": [1, 0], **_counting_graph()})
     compiled = compile(document, default_registry())
-    first, second = compiled.instantiate(), compiled.instantiate()
+    first, second = GraphInstance(compiled), GraphInstance(compiled)
     for _ in range(3):
         first.tick()
     second.tick()
@@ -219,14 +219,14 @@ def test_event_sources_fire_in_document_order():
          {"name": "x", "type": "test.Record", "inputs": {"label": "from late"}},
          {"name": "y", "type": "test.Record", "inputs": {"label": "from early"}}],
         [_conn("early.outputs:tick", "y.inputs:execIn"), _conn("late.outputs:tick", "x.inputs:execIn")], registry)
-    compile(document, registry).instantiate().tick()
+    GraphInstance(compile(document, registry)).tick()
     assert record == ["from late", "from early"]
 
 
 def test_core_engine_imports_neither_pybullet_nor_pxr():
     import subprocess
 
-    code = ("import sys, graphflow.cli, graphflow.executor, graphflow.runtime, graphflow.testing;"
+    code = ("import sys, graphflow.cli, graphflow.executor, graphflow.runtime, graphflow.testing.harness;"
             "from graphflow.registry import default_registry; default_registry();"
             "from graphflow.testing import GraphHarness;"
             "GraphHarness({'nodes':[{'name':'t','type':'omni.graph.action.OnTick'}]}).run(3);"

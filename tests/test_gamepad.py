@@ -1,11 +1,21 @@
-"""Gamepad nodes on scripted pads (graphflow.gamepad): OnGamepadInput, ReadGamepadState, DrawScreenSpaceText."""
+"""Gamepad nodes on scripted pads (graphflow.inputs.gamepad): OnGamepadInput, ReadGamepadState, DrawScreenSpaceText."""
 import json
 
 import pytest
 
 from graphflow.executor import GraphRuntimeError
-from graphflow.gamepad import (ELEMENTS, NeutralPad, PadChange, PadSpecError, ScriptedPad, attach_gamepad,
-                               gamepad_for, load_pad_timeline, parse_pad_spec, scripted_pad)
+from graphflow.inputs.gamepad import (
+    ELEMENTS,
+    NeutralPad,
+    PadChange,
+    PadSpecError,
+    ScriptedPad,
+    attach_gamepad,
+    gamepad_for,
+    load_pad_timeline,
+    parse_pad_spec,
+    scripted_pad,
+)
 from graphflow.testing import GraphHarness, NodeHarness
 
 DT = 0.1

@@ -9,12 +9,14 @@ import sys
 from pathlib import Path
 
 import pytest
+from conftest import ROOT
 
-from graphflow import cli, draw
+from graphflow import cli
+from graphflow.cli import run as cli_run
 from graphflow.document import GraphError, load_document, parse_document, save_document
 from graphflow.executor import GraphRuntimeError
+from graphflow.observe import draw
 from graphflow.runtime import Simulation
-from conftest import ROOT
 
 COUNTER = ROOT / "graphs" / "counter_branch_print.json"
 PICK_PLACE = ROOT / "graphs" / "ur10_pick_place.json"
@@ -79,7 +81,7 @@ def test_relative_robot_path_computed_at_run_time_fails_fast_naming_the_node(tmp
     path = write(tmp_path / "relative.json", arm_graph(source, robot_path=""))
     code, out, err = run_cli(capsys, "run", path, "--ticks", "3")
     assert (code, out) == (1, "")
-    assert failure_line(err) == ("graphflow: run-time error: node 'arm': isaacsim.core.nodes.IsaacArticulationController failed: "
+    assert failure_line(err) == (f"{path}: run-time failure: node 'arm': isaacsim.core.nodes.IsaacArticulationController failed: "
                    "WorldError: ur10 is not part of an articulation\n")
 
 
@@ -134,7 +136,7 @@ def test_infinite_joint_target_computed_at_run_time_exits_1_naming_the_node(tmp_
     path = write(tmp_path / "overflow.json", data)
     code, out, err = run_cli(capsys, "run", path, "--ticks", "3")
     assert (code, out) == (1, "")
-    assert failure_line(err) == ("graphflow: run-time error: node 'arm': inputs:positionCommand [inf, 0.0, 0.0, 0.0, 0.0, 0.0] "
+    assert failure_line(err) == (f"{path}: run-time failure: node 'arm': inputs:positionCommand [inf, 0.0, 0.0, 0.0, 0.0, 0.0] "
                    "holds an infinite target; no command applied (targets must be finite; NaN leaves a joint alone)\n")
 
 
@@ -157,7 +159,7 @@ def test_read_prim_attribute_with_empty_name_exits_1_naming_the_node(tmp_path, c
                      {"src": "read.outputs:value", "dst": "say.inputs:text"}]))
     code, out, err = run_cli(capsys, "run", path, "--ticks", "2")
     assert (code, out) == (1, "")
-    assert failure_line(err) == "graphflow: run-time error: node 'read': no attribute name: inputs:name is empty\n"
+    assert failure_line(err) == f"{path}: run-time failure: node 'read': no attribute name: inputs:name is empty\n"
 
 
 def test_usd_errors_reach_the_user_without_internal_names():
@@ -277,7 +279,7 @@ def test_ctrl_c_while_loading_exits_130(capsys, monkeypatch):
     def interrupted(_path, registry=None):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(cli, "load_document", interrupted)
+    monkeypatch.setattr(cli_run, "load_document", interrupted)
     assert run_cli(capsys, "run", COUNTER)[::2] == (130, "graphflow: interrupted\n")
 
 
@@ -418,12 +420,12 @@ def test_import_errors_name_the_usda_file_position_node_and_attribute(tmp_path, 
     broken.write_text('#usda 1.0\ndef Xform "World" {\n  def Cube "C" { double size = \n}\n')
     code, _out, err = run_cli(capsys, "import", broken)
     assert code == 2
-    assert err == f"{broken}: not a USD stage ({broken}:3:18: Expected }} at 'double size = ' in </World/C>)\n"
+    assert err == f"graphflow: error: {broken}: not a USD stage ({broken}:3:18: Expected }} at 'double size = ' in </World/C>)\n"
     assert "pxrInternal" not in err
     stage = tmp_path / "graph.usda"
     stage.write_text(OMNIGRAPH_WITH_A_BAD_VALUE)
     code, _out, err = run_cli(capsys, "import", stage, "-o", tmp_path / "graph.json")
-    assert (code, err) == (2, f"{stage}: node 'say' input 'inputs:text': expected string, got 5\n")
+    assert (code, err) == (2, f"graphflow: error: {stage}: node 'say' input 'inputs:text': expected string, got 5\n")
     assert not (tmp_path / "graph.json").exists()
 
 
@@ -538,7 +540,7 @@ def test_format_text_field_width_cannot_print_gigabytes(tmp_path, capsys):
     computed = write(tmp_path / "computed.json", format_graph({}))
     code, out, err = run_cli(capsys, "run", computed, "--ticks", "2")
     assert (code, out) == (1, "")
-    assert err.startswith("graphflow: run-time error: node 'text': inputs:format: field width or precision")
+    assert err.startswith(f"{computed}: run-time failure: node 'text': inputs:format: field width or precision")
     wide_enough = write(tmp_path / "fine.json", format_graph({"format": "[{value:>8.3f}]"}))
     assert run_cli(capsys, "run", wide_enough, "--ticks", "1")[:2] == (0, "[   1.000]\n")
 
@@ -557,7 +559,7 @@ def test_squaring_a_variable_every_tick_stops_at_64_bits(tmp_path, capsys):
     code, out, err = run_cli(capsys, "run", squaring, "--ticks", "100")
     assert (code, out) == (1, "")
     # tick 6 holds 3**32 (51 bits); its square needs 102
-    assert failure_line(err) == ("graphflow: run-time error: node 'square': integer overflow: the product of 51-bit and 51-bit "
+    assert failure_line(err) == (f"{squaring}: run-time failure: node 'square': integer overflow: the product of 51-bit and 51-bit "
                    "integers does not fit 64 bits\n")
 
 
@@ -572,7 +574,7 @@ def test_text_doubling_every_tick_stops_at_a_million_characters(tmp_path, capsys
                      {"src": "twice.outputs:text", "dst": "write.inputs:value"}]))
     code, out, err = run_cli(capsys, "run", doubling, "--ticks", "100")
     assert (code, out) == (1, "")
-    assert failure_line(err) == ("graphflow: run-time error: node 'twice': outputs:text would be 1048576 characters, "
+    assert failure_line(err) == (f"{doubling}: run-time failure: node 'twice': outputs:text would be 1048576 characters, "
                    "more than 1000000\n")   # 2 * 2**19: tick 19
 
 
@@ -590,5 +592,5 @@ def test_a_value_fed_back_into_itself_stops_at_16_levels(tmp_path, capsys):
     trace = tmp_path / "nest.jsonl"
     code, out, err = run_cli(capsys, "run", nesting, "--ticks", "100", "--trace", trace)
     assert (code, out) == (1, "")
-    assert failure_line(err) == "graphflow: run-time error: node 'write': variable 'x': value nests more than 16 levels deep\n"
+    assert failure_line(err) == f"{nesting}: run-time failure: node 'write': variable 'x': value nests more than 16 levels deep\n"
     assert len(trace.read_text().splitlines()) == 1 + 16   # header and ticks 1-16; tick 17 would nest 17 deep

@@ -173,7 +173,7 @@ def assert_clean_failure(code: int, err: str, allowed: tuple[int, ...]) -> None:
     assert code in allowed, (code, err)
     assert "unexpected error" not in err and "Traceback" not in err, err
     for line in err.splitlines():   # every error is one line naming the file, or a run-time line naming the node
-        assert line.startswith(("graphflow: error: ", "graphflow: run-time error: ", "WARNING", "ERROR")) \
+        assert line.startswith(("graphflow: error: ", "graphflow: run-time error: ", "WARNING", "ERROR")) or ": run-time failure: " in line \
             or ".json: " in line, line
 
 

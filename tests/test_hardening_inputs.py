@@ -9,11 +9,11 @@ import os
 from pathlib import Path
 
 import pytest
+from conftest import ROOT
 
 from graphflow import cli
 from graphflow.document import GraphError, load_document, parse_document
 from graphflow.files import FileProblem, loads_strict
-from conftest import ROOT
 
 ON_TICK = {"name": "tick", "type": "omni.graph.action.OnTick"}
 

@@ -2,10 +2,10 @@
 import io
 import json
 
-from graphflow.runtime import Simulation
-from graphflow.trace import TraceRecorder
 from conftest import ROOT
 
+from graphflow.observe.trace import TraceRecorder
+from graphflow.runtime import Simulation
 
 
 def test_header_lists_the_stage_gripper_before_any_node_touched_it():

@@ -1,11 +1,19 @@
-"""omni.graph.action.OnKeyboardInput with scripted key timelines (graphflow.keyboard)."""
+"""omni.graph.action.OnKeyboardInput with scripted key timelines (graphflow.inputs.keyboard)."""
 import json
 
 import pytest
 
-from graphflow.keyboard import (KeyAction, KeySpecError, NoKeys, ScriptedKeys, attach_keyboard, keyboard_for,
-                                load_key_timeline, parse_key_spec)
-from graphflow.testing import ExecState, GraphHarness, NodeHarness
+from graphflow.inputs.keyboard import (
+    KeyAction,
+    KeySpecError,
+    NoKeys,
+    ScriptedKeys,
+    attach_keyboard,
+    keyboard_for,
+    load_key_timeline,
+    parse_key_spec,
+)
+from graphflow.testing import GraphHarness, NodeHarness
 
 DT = 0.1
 

@@ -4,8 +4,14 @@ import math
 import numpy as np
 import pytest
 
-from graphflow.kinematics import (SUCTION_DOWN, UR10_DEFAULT_JOINTS, matrix_to_quaternion, quaternion_to_matrix,
-                                  rotation_error, ur10_chain)
+from graphflow.kinematics import (
+    SUCTION_DOWN,
+    UR10_DEFAULT_JOINTS,
+    matrix_to_quaternion,
+    quaternion_to_matrix,
+    rotation_error,
+    ur10_chain,
+)
 
 ARM = "/ur10"
 TIP = "/ur10/ee_link/attachment_joint"

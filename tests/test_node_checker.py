@@ -9,10 +9,14 @@ compute them. A new node type with a prim input needs an entry there.
 """
 import pytest
 
-from graphflow.checker import NodeCheckError, check_node_type, spec_problems
 from graphflow.physics import create_world
 from graphflow.registry import default_registry
 from graphflow.spec import Attribute, NodeSpec, NodeType
+from graphflow.testing.node_checker import (
+    NodeCheckError,
+    check_node_type,
+    spec_problems,
+)
 from graphflow.types import ExecState
 
 STAGE = "asset:ur10_pick_place.usda"

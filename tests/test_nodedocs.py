@@ -1,10 +1,11 @@
 """docs/nodes.md is generated from the node specs: it must match them, and the command must write it safely."""
 
+from conftest import ROOT
+
+from graphflow.catalog.markdown import REGENERATE_COMMAND, render_markdown
 from graphflow.cli import main
-from graphflow.nodedocs import REGENERATE_COMMAND, render_markdown
 from graphflow.registry import Registry, default_registry
 from graphflow.spec import Attribute, NodeSpec, NodeType
-from conftest import ROOT
 
 DOCS = ROOT / "docs" / "nodes.md"
 

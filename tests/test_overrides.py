@@ -5,19 +5,22 @@ import subprocess
 import sys
 
 import pytest
+from conftest import ROOT
 
 from graphflow.document import load_document
-from graphflow.overrides import PoseJitter, apply_node_overrides, parse_set
-from graphflow.randomize import scenario_for_run
-from graphflow.randomize import Randomization, load_randomization
-from conftest import ROOT
+from graphflow.variants.overrides import PoseJitter, apply_node_overrides, parse_set
+from graphflow.variants.randomize import (
+    Randomization,
+    load_randomization,
+    variant_for_run,
+)
 
 COUNTER = ROOT / "graphs" / "counter_branch_print.json"
 TUNED = ROOT / "graphs" / "ur10_pick_place_tuned.json"
 
 
 def graphflow(*args, cwd=None):
-    return subprocess.run([sys.executable, "-m", "graphflow.cli", *args], capture_output=True, text=True, cwd=cwd)
+    return subprocess.run([sys.executable, "-m", "graphflow", *args], capture_output=True, text=True, cwd=cwd)
 
 
 def test_node_override_changes_the_run_and_leaves_the_document_alone():
@@ -67,24 +70,24 @@ def test_bad_stage_overrides_exit_2_naming_the_override(override, message):
 
 def test_stage_overrides_are_what_the_parsed_stage_has_and_the_file_is_untouched():
     document = load_document(TUNED)
-    scenario = scenario_for_run(document, ["/World/Cube.physics:mass=2.5", "/World/Cube.xformOp:translate=[0.45, 0.35, 0.025]"], None, 0)
+    scenario = variant_for_run(document, ["/World/Cube.physics:mass=2.5", "/World/Cube.xformOp:translate=[0.45, 0.35, 0.025]"], None, 0)
     with scenario.create_world() as world:
         assert world.get_attribute("/World/Cube", "physics:mass") == pytest.approx(2.5)
         assert world.prim_pose("/World/Cube")[0] == pytest.approx((0.45, 0.35, 0.025), abs=1e-7)
         assert world.description.bodies["/World/Cube"].mass.mass == pytest.approx(2.5)
     text = (ROOT / "graphflow" / "assets" / "ur10_pick_place_tuned.usda").read_text()
     assert "float physics:mass = 0.1" in text
-    plain = scenario_for_run(document, [], None, 0)
+    plain = variant_for_run(document, [], None, 0)
     with plain.create_world() as world:
         assert world.get_attribute("/World/Cube", "physics:mass") == pytest.approx(0.1)
 
 
 def test_pose_jitter_moves_and_yaws_the_prim_about_its_origin():
     document = load_document(TUNED)
-    scenario = scenario_for_run(document, [], None, 0)
-    from graphflow.overrides import Scenario
+    scenario = variant_for_run(document, [], None, 0)
+    from graphflow.variants.overrides import Variant
 
-    moved = Scenario(scenario.document, (PoseJitter("/World/Cube", (0.01, -0.02, 0.0), 90.0),))
+    moved = Variant(scenario.document, (PoseJitter("/World/Cube", (0.01, -0.02, 0.0), 90.0),))
     with moved.create_world() as world:
         position, orientation = world.prim_pose("/World/Cube")
     assert position == pytest.approx((0.41, 0.38, 0.025), abs=1e-7)
@@ -99,7 +102,7 @@ def test_heavy_cube_drops_under_a_low_force_limit_and_holds_under_a_high_one():
     document = load_document(TUNED)
     errors = {}
     for limit in (50, 200):
-        scenario = scenario_for_run(document, ["gripper.disableGravity=false", f"gripper.forceLimit={limit}",
+        scenario = variant_for_run(document, ["gripper.disableGravity=false", f"gripper.forceLimit={limit}",
                                                "/World/Cube.physics:mass=8"], None, 0)
         with Simulation(scenario.document, world=scenario.create_world()) as simulation:
             result = simulation.run(seconds=30)

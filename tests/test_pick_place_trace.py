@@ -3,9 +3,9 @@ import subprocess
 import sys
 
 import pytest
-
-from graphflow.trace import read_trace
 from conftest import ROOT
+
+from graphflow.observe.trace import read_trace
 
 PICK_PLACE = ROOT / "graphs" / "ur10_pick_place.json"
 GRIPPER = "/World/ur10/ee_link/SurfaceGripper"
@@ -15,7 +15,7 @@ pytestmark = pytest.mark.slow
 
 def traced(tmp_path, name):
     path = tmp_path / name
-    result = subprocess.run([sys.executable, "-m", "graphflow.cli", "run", str(PICK_PLACE), "--trace", str(path)],
+    result = subprocess.run([sys.executable, "-m", "graphflow", "run", str(PICK_PLACE), "--trace", str(path)],
                             capture_output=True, text=True)
     assert result.returncode == 0, result.stderr
     return path

@@ -6,10 +6,10 @@ import sys
 from pathlib import Path
 
 import pytest
-
-from graphflow.plot import timeline, timeline_figure
-from graphflow.trace import read_trace
 from conftest import ROOT
+
+from graphflow.observe.timeline import timeline, timeline_figure
+from graphflow.observe.trace import read_trace
 
 matplotlib = pytest.importorskip("matplotlib")
 
@@ -17,7 +17,7 @@ GRIPPER = "/World/ur10/ee_link/SurfaceGripper"
 
 
 def graphflow(*args):
-    return subprocess.run([sys.executable, "-m", "graphflow.cli", *args], capture_output=True, text=True)
+    return subprocess.run([sys.executable, "-m", "graphflow", *args], capture_output=True, text=True)
 
 
 def pick_trace(tmp_path) -> Path:

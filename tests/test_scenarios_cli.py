@@ -10,9 +10,8 @@ from graphflow.executor import GraphRuntimeError
 from graphflow.testing import ExecState, NodeHarness
 
 
-
 def graphflow(*args, cwd=None):
-    return subprocess.run([sys.executable, "-m", "graphflow.cli", *args], capture_output=True, text=True, cwd=cwd)
+    return subprocess.run([sys.executable, "-m", "graphflow", *args], capture_output=True, text=True, cwd=cwd)
 
 
 def _counter_graph(stop_at, checks, assert_below=None, **extra):
@@ -74,7 +73,7 @@ def test_a_false_assert_exits_1_naming_node_tick_time_and_message(tmp_path):
     result = graphflow("run", str(graph))
     assert result.returncode == 1
     assert result.stderr.splitlines() == [
-        "graphflow: run-time error: node 'count_is_small': assertion failed at tick 3, t = 1.500 s: the count stays small",
+        f"{graph}: run-time failure: node 'count_is_small': assertion failed at tick 3, t = 1.500 s: the count stays small",
         f"graphflow: FAIL {graph}: 1 failure (3 ticks, 1.500 s simulated)"]
 
 

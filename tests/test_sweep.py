@@ -9,16 +9,19 @@ import time
 from pathlib import Path
 
 import pytest
-
-from graphflow.sweep import LocalPool, load_sweep, run_sweep, wilson_interval
 from conftest import ROOT
+
+from graphflow.sweep.definition import load_sweep
+from graphflow.sweep.launchers import LocalPool
+from graphflow.sweep.results import wilson_interval
+from graphflow.sweep.session import run_sweep
 
 COUNTER = ROOT / "graphs" / "counter_branch_print.json"
 TUNED = ROOT / "graphs" / "ur10_pick_place_tuned.json"
 
 
 def graphflow(*args, cwd=None, **options):
-    return subprocess.run([sys.executable, "-m", "graphflow.cli", *args], capture_output=True, text=True,
+    return subprocess.run([sys.executable, "-m", "graphflow", *args], capture_output=True, text=True,
                           cwd=cwd, **options)
 
 
@@ -164,12 +167,12 @@ def test_ctrl_c_keeps_finished_episodes_and_resume_finishes_the_rest(tmp_path):
     # three quick episodes, then one of 250000 ticks (seconds of work)
     sweep = write_sweep(tmp_path, grid={"at_least_three.b": [1, 2, 3, 250000]}, ticks=300000)
     out = tmp_path / "out"
-    process = subprocess.Popen([sys.executable, "-m", "graphflow.cli", "sweep", str(sweep), "--out", str(out), "-j", "1"],
+    process = subprocess.Popen([sys.executable, "-m", "graphflow", "sweep", str(sweep), "--out", str(out), "-j", "1"],
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     _wait_for_records(out / "episodes.jsonl", 3, process)
     process.send_signal(signal.SIGINT)
     _stdout, stderr = process.communicate(timeout=60)
-    assert process.returncode == 1
+    assert process.returncode == 130   # Ctrl-C is 130 everywhere (run, test, sweep)
     assert "interrupted: 3 of 4 episodes kept" in stderr and "--resume" in stderr
     assert "Traceback" not in stderr
     assert [r["key"] for r in records(out)] == ["p0-s0", "p1-s0", "p2-s0"]
@@ -227,7 +230,7 @@ def test_ray_refuses_cleanly_when_it_is_not_installed(tmp_path):
     result = subprocess.run([sys.executable, "-c", code, "sweep", str(sweep), "--out", str(tmp_path / "out"), "--ray"],
                             capture_output=True, text=True)
     assert result.returncode == 2
-    assert result.stderr.strip() == "graphflow: error: --ray needs Ray: pip install 'graphflow[ray]'"
+    assert result.stderr.strip() == "graphflow: error: --ray needs the 'ray' extra (Ray): pip install 'graphflow[ray]'"
 
 
 @pytest.mark.slow
@@ -245,7 +248,7 @@ def test_a_ray_actor_that_dies_fails_only_the_episode_it_was_running(tmp_path):
     """The long episode 0 runs with episode 1 queued behind it on the same actor: killing the actor fails
     episode 0 only; episode 1 runs again elsewhere and passes."""
     ray = pytest.importorskip("ray")
-    from graphflow.sweep import RayPool
+    from graphflow.sweep.launchers import RayPool
 
     sweep = load_sweep(str(write_sweep(tmp_path, grid={"at_least_three.b": [100000000, 1, 2, 3, 4]}, ticks=200000000)))
     pool = RayPool(sweep, 2, None)
@@ -277,13 +280,13 @@ def test_plot_writes_a_success_map_and_refuses_without_matplotlib(tmp_path):
     bare = subprocess.run([sys.executable, "-c", code, "sweep", "plot", str(out), "-o", str(tmp_path / "x.png")],
                           capture_output=True, text=True)
     assert bare.returncode == 2
-    assert bare.stderr.strip() == "graphflow: error: graphflow sweep plot needs matplotlib: pip install 'graphflow[viz]'"
+    assert bare.stderr.strip() == "graphflow: error: graphflow sweep plot needs the 'viz' extra (matplotlib and Pillow): pip install 'graphflow[viz]'"
 
 
 @pytest.mark.slow
 def test_a_soft_underdamped_hold_rings_and_a_stiff_one_does_not(tmp_path):
     """The tutorial's second experiment in two episodes of the shipped sweep's graph: kp 100, kd 1 against kp 1e5, kd 1e4."""
-    from graphflow.sweep import EpisodeRunner
+    from graphflow.sweep.episode import EpisodeRunner
 
     sweep = load_sweep(str(ROOT / "sweeps" / "hold_stiffness_damping.json"))
     runner = EpisodeRunner(sweep)
@@ -321,9 +324,9 @@ def test_an_episode_in_a_busy_worker_equals_its_replay_in_a_fresh_run():
     import math
 
     from graphflow.document import load_document
-    from graphflow.randomize import scenario_for_run
     from graphflow.runtime import Simulation
-    from graphflow.sweep import EpisodeRunner
+    from graphflow.sweep.episode import EpisodeRunner
+    from graphflow.variants.randomize import variant_for_run
 
     sweep = load_sweep(str(ROOT / "sweeps" / "force_limit_mass.json"))
     episodes = sweep.episodes()
@@ -335,7 +338,7 @@ def test_an_episode_in_a_busy_worker_equals_its_replay_in_a_fresh_run():
         runner.close()
     command = sweep.replay_command(episodes[8])
     sets = [command[i + 1] for i, word in enumerate(command) if word == "--set"]
-    scenario = scenario_for_run(load_document(sweep.graph_source), sets, sweep.source, episodes[8].seed)
+    scenario = variant_for_run(load_document(sweep.graph_source), sets, sweep.source, episodes[8].seed)
     with Simulation(scenario.document, world=scenario.create_world()) as simulation:
         result = simulation.run(seconds=sweep.limits()["seconds"])
         position = simulation.world.prim_pose("/World/Cube")[0]

@@ -4,17 +4,18 @@ import json
 import subprocess
 import sys
 
+from conftest import ROOT
+
 from graphflow.document import load_document
+from graphflow.observe.trace import TraceRecorder, read_trace
 from graphflow.runtime import Simulation
 from graphflow.testing import GraphHarness
-from graphflow.trace import TraceRecorder, read_trace
-from conftest import ROOT
 
 COUNTER_GRAPH = ROOT / "graphs" / "counter_branch_print.json"
 
 
 def graphflow(*args, cwd=None):
-    return subprocess.run([sys.executable, "-m", "graphflow.cli", *args], capture_output=True, text=True, cwd=cwd)
+    return subprocess.run([sys.executable, "-m", "graphflow", *args], capture_output=True, text=True, cwd=cwd)
 
 
 def traced_run(tmp_path, name="run.jsonl", *extra):

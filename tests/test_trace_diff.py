@@ -4,14 +4,15 @@ import subprocess
 import sys
 from pathlib import Path
 
-from graphflow.trace import first_difference, read_trace
 from conftest import ROOT
+
+from graphflow.observe.trace import first_difference, read_trace
 
 COUNTER_GRAPH = ROOT / "graphs" / "counter_branch_print.json"
 
 
 def graphflow(*args):
-    return subprocess.run([sys.executable, "-m", "graphflow.cli", *args], capture_output=True, text=True)
+    return subprocess.run([sys.executable, "-m", "graphflow", *args], capture_output=True, text=True)
 
 
 def counter_trace(tmp_path, name):

@@ -4,7 +4,7 @@ import inspect
 import pytest
 
 from graphflow.runtime import DEFAULT_TIME_STEP, create_world
-from graphflow.testing_backend import FakeWorld
+from graphflow.testing.fake_world import FakeWorld
 from graphflow.world import Attachments, ClockWorld, World, WorldError
 
 

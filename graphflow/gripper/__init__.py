@@ -9,10 +9,14 @@
 * ``GripperStatus`` (Open=0, Closing=1, Closed=2).
 * ``SurfaceGripper``: the legacy ``translate/direction/...`` gripper of Isaac's tutorials.
 """
-from .manager import SurfaceGripperManager, manager_for
-from .runtime import GripperStatus
-from .usd_schema import (apply_attachment_point_api, create_surface_gripper, define_surface_gripper,
-                         register_schema)
+from graphflow.gripper.component import GripperStatus
+from graphflow.gripper.manager import SurfaceGripperManager, manager_for
+from graphflow.gripper.usd_schema import (
+                         apply_attachment_point_api,
+                         create_surface_gripper,
+                         define_surface_gripper,
+                         register_schema,
+)
 
 __all__ = ["GripperStatus", "SurfaceGripperManager", "apply_attachment_point_api", "create_surface_gripper",
            "define_surface_gripper", "manager_for", "register_schema"]

@@ -9,10 +9,9 @@ from __future__ import annotations
 
 import math
 
+from graphflow.gripper.component import AttachmentPoint, compliance_from_joint
+from graphflow.gripper.usd_schema import CLEARANCE_OFFSET, read_float, read_forward_axis
 from graphflow.world import AXIS_NAMES, AxisCompliance
-
-from .runtime import AttachmentPoint, compliance_from_joint
-from .usd_schema import CLEARANCE_OFFSET, read_float, read_forward_axis
 
 
 def attachment_point(stage, joint_path: str, described_joints) -> AttachmentPoint | None:

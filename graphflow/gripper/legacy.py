@@ -30,9 +30,12 @@ from __future__ import annotations
 import logging
 import math
 
-from .manager import manager_for
-from .runtime import GripperStatus
-from .usd_schema import apply_attachment_point_api, create_surface_gripper
+from graphflow.gripper.component import GripperStatus
+from graphflow.gripper.manager import manager_for
+from graphflow.gripper.usd_schema import (
+    apply_attachment_point_api,
+    create_surface_gripper,
+)
 
 log = logging.getLogger(__name__)
 

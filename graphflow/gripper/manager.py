@@ -16,11 +16,14 @@ from __future__ import annotations
 import logging
 from typing import Iterable, Sequence
 
+from graphflow.gripper import usd_schema
+from graphflow.gripper.component import (
+    GripperProperties,
+    GripperStatus,
+    SurfaceGripperComponent,
+)
+from graphflow.gripper.joints import attachment_point
 from graphflow.world import RIGID
-
-from . import usd_schema
-from .joints import attachment_point
-from .runtime import GripperProperties, GripperStatus, SurfaceGripperComponent
 
 log = logging.getLogger(__name__)
 

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from typing import Sequence
 
-from .manager import SurfaceGripperManager
+from graphflow.gripper.manager import SurfaceGripperManager
 
 
 class GripperView:

@@ -15,7 +15,7 @@ Public API
     ``close()`` frees its client.
     A broken stage raises ``StageError`` (a ``ValueError``) naming file and prim.
 
-``resolve_stage(reference, base_dir=None) -> Path`` / ``asset_path(name) -> Path``
+``graphflow.usd.resolver.resolve_stage(reference, base_dir=None) -> Path`` (stage names are usd's business)
     ``asset:ur10_pick_place.usda`` names a packaged stage; other references are
     paths, relative to *base_dir* (the graph file's folder).
 
@@ -81,24 +81,22 @@ Choices
 """
 from __future__ import annotations
 
+from graphflow.physics.native_output import native_output_silenced
 from graphflow.usd.errors import StageError, UnsupportedPrimWarning
-
-from .assets import asset_path, resolve_stage
-from .native_output import native_output_silenced
+from graphflow.usd.resolver import resolve_stage
 
 with native_output_silenced(1, 2):
     import pybullet  # noqa: F401  (imported here once so its build banner never reaches the output)
 
-__all__ = ["create_world", "StageError", "UnsupportedPrimWarning", "asset_path", "resolve_stage",
+__all__ = ["create_world", "StageError", "UnsupportedPrimWarning",
            "PyBulletWorld", "RayHit", "Contact", "ATTRIBUTES"]
 
 
 def create_world(stage=None, *, time_step: float | None = None, substeps: int | None = None, gui: bool = False):
     """Load a stage (path or ``Usd.Stage``; None = empty world) into a new PyBullet world."""
+    from graphflow.physics.world import PyBulletWorld
     from graphflow.usd.description import StageDescription
     from graphflow.usd.physics_import import load_description, open_stage
-
-    from .world import PyBulletWorld
 
     if stage is None:
         description = StageDescription(source="<empty world>", up_axis="Z", meters_per_unit=1.0,
@@ -116,7 +114,7 @@ def __getattr__(name):
 
         return getattr(graphflow.world, name)
     if name in ("PyBulletWorld", "ATTRIBUTES"):
-        from . import world
+        from graphflow.physics import world
 
         return getattr(world, name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -56,15 +56,21 @@ from typing import Sequence
 
 import pybullet
 
+from graphflow.physics.support import supports_relieve
+from graphflow.poses import (
+    AXIS_VECTORS,
+    Pose,
+    compose,
+    invert,
+    quat_matrix,
+    quat_rotate,
+    relative,
+)
 from graphflow.world import RIGID, AxisCompliance
-
-from graphflow.poses import AXIS_VECTORS, Pose, compose, invert, quat_matrix, quat_rotate, relative
 
 HOLD_MAX_FORCE = 1.0e7          # N (and N·m); far above any break limit so the reading is never clamped
 CONTACT_DAMPING_STEPS = 10      # while the object touches something, damping >= this * m / dt
 INSIDE_PROBE_RADIUS = 1.0e-4   # m: a ray starts inside a body when this sphere at its origin is 2 radii deep
-RESTING_GAP = 2.0e-4            # m: a contact this close still supports the held object (resting jitter: 0.05 mm)
-SAME_PLANE_COSINE = 0.999       # contact normals this close to parallel are one support plane
 
 
 @dataclass
@@ -208,41 +214,9 @@ class PyBulletAttachments:
                 continue
             force = [force[i] - along * direction[i] for i in range(3)]
         if rigid_rows_only:
-            force = self._supports_relieve(hold, force)
+            force = supports_relieve(self.bullet, hold.gripper, hold.target, force)
         share = 1.0 / len(hold.members)
         return force[0] * share, force[1] * share, force[2] * share
-
-    def _supports_relieve(self, hold: _Hold, force_on_gripper: list[float]) -> list[float]:
-        """The rigid rows' force once the object's supports carry what they can (see the module notes).
-
-        A rigid hold and a resting contact share the object's load however PyBullet's solver happens
-        to split it (it held a 5 kg cube 0.05 mm above the table and read its whole weight); PhysX's
-        contact carries a resting object's weight. So for each support plane within RESTING_GAP, the
-        load the hold and that support carry together, less any push of the hold into the support
-        (which the hold keeps), goes to the support as far as its friction cone allows; the rest stays
-        on the hold. Contacts that opened (the object lifted) carry nothing, and the hold its whole load."""
-        bullet, target = self.bullet, hold.target
-        contacts = [c for c in bullet.getContactPoints(bodyA=target[0], linkIndexA=target[1])
-                    if c[8] <= RESTING_GAP and (c[2], c[4]) != hold.gripper]
-        if not contacts:
-            return force_on_gripper
-        on_object = [-f for f in force_on_gripper]
-        for normal, group in _planes(contacts):
-            support = [0.0, 0.0, 0.0]        # what the solver put on the object through this plane's contacts
-            for contact in group:
-                for i in range(3):
-                    support[i] += (contact[9] * contact[7][i] - contact[10] * contact[11][i]
-                                   - contact[12] * contact[13][i])
-            friction = self._friction(target, (group[0][2], group[0][4]))
-            push = min(0.0, _dot(on_object, normal))
-            shared = [on_object[i] + support[i] - push * normal[i] for i in range(3)]
-            carried = _cone_projection(shared, normal, friction)
-            on_object = [push * normal[i] + shared[i] - carried[i] for i in range(3)]
-        return [-f for f in on_object]
-
-    def _friction(self, target: tuple[int, int], other: tuple[int, int]) -> float:
-        """The pair's friction coefficient as Bullet combines it: the product of the two lateral frictions."""
-        return self.bullet.getDynamicsInfo(*target)[1] * self.bullet.getDynamicsInfo(*other)[1]
 
     def torque_on_gripper(self, handle: int):
         """This point's share of the hold's torque on the gripper about the joint origin, world axes, N·m."""
@@ -439,33 +413,6 @@ def _integrate(value: float, rate: float, load: float, inertia: float, dt: float
     elif value <= axis.lower:
         value, rate = axis.lower, max(rate, 0.0)
     return value, rate
-
-
-def _planes(contacts) -> list[tuple]:
-    """Contacts grouped by support plane: (unit normal into the object, contacts) per normal direction."""
-    planes: list[tuple] = []
-    for contact in contacts:
-        normal = tuple(contact[7])
-        for plane_normal, group in planes:
-            if _dot(plane_normal, normal) > SAME_PLANE_COSINE:
-                group.append(contact)
-                break
-        else:
-            planes.append((normal, [contact]))
-    return planes
-
-
-def _cone_projection(force, normal, friction: float):
-    """The nearest force to *force* that a contact with this normal and friction coefficient can exert."""
-    along = _dot(force, normal)
-    tangential = [force[i] - along * normal[i] for i in range(3)]
-    across = math.sqrt(_dot(tangential, tangential))
-    if across <= friction * along:
-        return tuple(force)
-    if friction * across <= -along:
-        return 0.0, 0.0, 0.0
-    scale = (along + friction * across) / (1.0 + friction * friction)
-    return tuple(scale * normal[i] + friction * scale * tangential[i] / across for i in range(3))
 
 
 def _quat_from_rotation_vector(vector) -> tuple:

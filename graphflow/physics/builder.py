@@ -32,16 +32,23 @@ from __future__ import annotations
 import hashlib
 import math
 import os
-
-import pybullet
 from dataclasses import dataclass, field, replace
 
+import pybullet
+
+from graphflow.physics.contacts import ROLLING_SHAPES, anchor_friction, plane_box
+from graphflow.poses import (
+    AXIS_VECTORS,
+    IDENTITY_POSE,
+    Pose,
+    compose,
+    invert,
+    quat_from_axis_angle,
+    quat_multiply,
+)
 from graphflow.usd.description import Body, Joint, Shape, StageDescription
 from graphflow.usd.errors import StageError
 from graphflow.usd.physics_import import joint_frame_offset
-from graphflow.poses import AXIS_VECTORS, IDENTITY_POSE, Pose, compose, invert, quat_from_axis_angle, quat_multiply
-
-from .contacts import ROLLING_SHAPES, anchor_friction, plane_box
 
 CONE_SEGMENTS = 24                 # a cone collider is the convex hull of this many base points and its apex
 CONSTRAINT_MAX_FORCE = 1.0e9       # joints between free bodies are rigid (see pybullet_notes §4 default quirk)

@@ -1,4 +1,4 @@
-"""The PyBullet GUI window as a graphflow key source (see graphflow.keyboard).
+"""The PyBullet GUI window as a graphflow key source (see graphflow.inputs.keyboard).
 
 PyBullet reports keys as codes with flags; this turns them into Kit key
 tokens. It has one Shift, Ctrl and Alt, reported as the left-hand keys. The

@@ -7,10 +7,9 @@ cleared on every rebuild).
 """
 from __future__ import annotations
 
+from graphflow.physics.builder import ArticulationHandle, BodyHandle
 from graphflow.poses import IDENTITY_POSE, Pose, compose, invert, relative
 from graphflow.world import WorldError
-
-from .builder import ArticulationHandle, BodyHandle
 
 
 class SceneLookups:

@@ -18,6 +18,8 @@ from pathlib import Path
 import numpy as np
 import pybullet
 
+from graphflow.errors import BadInput
+
 FIELD_OF_VIEW = 50.0            # degrees, vertical
 NEAR, FAR = 0.01, 100.0         # m, clipping planes
 LARGEST_FRAMED_BODY = 20.0      # m: bigger bodies (ground planes) are left out when framing the scene
@@ -28,7 +30,7 @@ GROUND = (0.86, 0.87, 0.88)
 PALETTE = ((0.55, 0.60, 0.68), (0.95, 0.55, 0.20), (0.30, 0.62, 0.40), (0.85, 0.30, 0.30), (0.55, 0.40, 0.75))
 
 
-class RecordingError(ValueError):
+class RecordingError(BadInput):
     """The recording cannot be made as asked (unknown format, no encoder, bad size): bad input, exit 2."""
 
 

@@ -17,19 +17,22 @@ from typing import Sequence
 import pybullet
 from pybullet_utils.bullet_client import BulletClient
 
+from graphflow.physics import attributes
+from graphflow.physics.attachment import WorldAttachments
+from graphflow.physics.builder import BuiltScene, SceneBuilder
+from graphflow.physics.contacts import (
+    SOLVER_RESIDUAL,
+    internal_substeps,
+    solver_iterations,
+)
+from graphflow.physics.drives import DriveTargets, GravitySwitches, JointControl
+from graphflow.physics.health import NonFiniteState, first_non_finite, health_plan
+from graphflow.physics.lookups import SceneLookups
+from graphflow.physics.native_output import native_stdout_silenced
+from graphflow.poses import compose
 from graphflow.usd.description import StageDescription
 from graphflow.usd.errors import warn_unsupported
-from graphflow.poses import compose
 from graphflow.world import DEFAULT_TIME_STEP, Contact, RayHit, Services, WorldError
-
-from . import attributes
-from .attachment import WorldAttachments
-from .builder import BuiltScene, SceneBuilder
-from .contacts import SOLVER_RESIDUAL, internal_substeps, solver_iterations
-from .drives import DriveTargets, GravitySwitches, JointControl
-from .health import NonFiniteState, first_non_finite, health_plan
-from .lookups import SceneLookups
-from .native_output import native_stdout_silenced
 
 SOLVER_ITERATIONS = 50              # PyBullet's default, stated so it stays fixed
 INSIDE_PROBE_RADIUS = 1.0e-4        # m: a ray starts inside a body when this sphere at its origin is 2 radii deep
@@ -170,7 +173,7 @@ class PyBulletWorld(SceneLookups):
 
     def window_keys(self):
         """The PyBullet window's keys (a DIRECT client reports none)."""
-        from .keyboard import PyBulletKeys
+        from graphflow.physics.keyboard import PyBulletKeys
 
         return PyBulletKeys(self.client.getKeyboardEvents)
 
@@ -230,7 +233,7 @@ class PyBulletWorld(SceneLookups):
         r = tuple(o - c for o, c in zip(origin, com))
         cross = (angular[1] * r[2] - angular[2] * r[1], angular[2] * r[0] - angular[0] * r[2],
                  angular[0] * r[1] - angular[1] * r[0])
-        return tuple(l + c for l, c in zip(linear, cross)), tuple(angular)
+        return tuple(v + c for v, c in zip(linear, cross)), tuple(angular)
 
     def joint_names(self, articulation_path: str) -> tuple[str, ...]:
         return self._articulation(articulation_path).joint_names

@@ -18,7 +18,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Iterable, Protocol
 
-from .messages import complete, type_name as standard_type
+from graphflow.ros2.messages import complete
+from graphflow.ros2.messages import type_name as standard_type
 
 
 @dataclass(frozen=True)

@@ -12,15 +12,17 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from .messages import definition
+from graphflow.errors import EXTRAS, BadInput, MissingExtra, require_extra
+from graphflow.ros2.messages import definition
 
 
-class RecordingError(ValueError):
+class RecordingError(BadInput):
     """The recording cannot be made (file exists, folder missing, library missing)."""
 
 
 def check_recording_path(path: str | Path) -> Path:
     """*path* as a Path when a recording may be written there; RecordingError (one line) when not."""
+    require_extra("--record-topics", "ros", "mcap", "mcap_ros2")
     path = Path(path)
     if path.exists():
         raise RecordingError(f"{path}: already exists; not overwriting it")
@@ -38,7 +40,7 @@ class McapRecording:
             from mcap.writer import CompressionType
             from mcap_ros2.writer import Writer
         except ImportError:
-            raise RecordingError("--record-topics needs the 'ros' extra: pip install 'graphflow[ros]'") from None
+            raise MissingExtra("--record-topics", "ros", EXTRAS["ros"]) from None
         self._partial = self.path.with_name(self.path.name + ".partial")
         self._stream = open(self._partial, "wb")
         self._writer = Writer(self._stream, compression=CompressionType.NONE)

@@ -11,12 +11,14 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
+from graphflow.errors import EXTRAS, BadInput, MissingExtra
+
 INTEGER_TYPES = {"byte", "char", "int8", "uint8", "int16", "uint16", "int32", "uint32", "int64", "uint64", "octet"}
 FLOAT_TYPES = {"float32", "float64"}
 STRING_TYPES = {"string", "wstring"}
 
 
-class MessageError(ValueError):
+class MessageError(BadInput):
     """A message or type name that does not fit the ROS 2 definitions; the text names the field."""
 
 
@@ -26,7 +28,7 @@ def type_store():
     try:
         from rosbags.typesys import Stores, get_typestore
     except ImportError:
-        raise MessageError("ROS 2 messages need the 'ros' extra: pip install 'graphflow[ros]'") from None
+        raise MissingExtra("ROS 2 messages", "ros", EXTRAS["ros"]) from None
     return get_typestore(Stores.ROS2_HUMBLE)
 
 

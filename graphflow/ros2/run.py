@@ -1,9 +1,13 @@
 """The ROS 2 side of ``graphflow run``: scripted topics in, an MCAP recording out."""
 from __future__ import annotations
 
-from .bus import attach_transport
-from .mcap_recording import McapRecording, RecordingError, check_recording_path
-from .timeline import TopicSpecError, scripted_topics
+from graphflow.ros2.bus import attach_transport
+from graphflow.ros2.mcap_recording import (
+    McapRecording,
+    RecordingError,
+    check_recording_path,
+)
+from graphflow.ros2.timeline import TopicSpecError, scripted_topics
 
 __all__ = ["RunOptionError", "check_options", "attach_topics"]
 

@@ -9,18 +9,19 @@ reaches theirs, in time order (file order, then flag order, for equal times).
 """
 from __future__ import annotations
 
-import json
 import math
 import re
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterable
 
-from .messages import MessageError, complete, type_name
-from graphflow.input_service import timeline_entries
+from graphflow.errors import BadInput
+from graphflow.files import FileProblem, loads_strict
+from graphflow.inputs.device import timeline_entries
+from graphflow.ros2.messages import MessageError, complete, type_name
 
 
-class TopicSpecError(ValueError):
+class TopicSpecError(BadInput):
     """A timeline entry that cannot be read; the message quotes it."""
 
 
@@ -84,9 +85,9 @@ def parse_topic_spec(text: str) -> ScriptedMessage:
     if not match:
         raise TopicSpecError(f"topic {text!r}: expected TOPIC@TIME=JSON, e.g. '/cmd_vel@1.0={{\"linear\": {{\"x\": 0.5}}}}'")
     try:
-        message = json.loads(match["json"])
-    except json.JSONDecodeError as error:
-        raise TopicSpecError(f"topic {text!r}: the message is not JSON ({error.msg})") from None
+        message = loads_strict(match["json"], f"topic {text!r}")
+    except FileProblem as error:
+        raise TopicSpecError(f"topic {text!r}: the message is not JSON ({error.reason})") from None
     return make_entry(match["topic"].strip(), float(match["time"]), message, where=f"topic {text!r}")
 
 

@@ -9,6 +9,6 @@
 
 ``pxr`` is only imported inside functions, so importing this package is cheap.
 """
-from .errors import StageError, UnsupportedPrimWarning
+from graphflow.usd.errors import StageError, UnsupportedPrimWarning
 
 __all__ = ["StageError", "UnsupportedPrimWarning"]

@@ -1,8 +1,10 @@
 """Errors and warnings raised while reading a physics stage."""
 from __future__ import annotations
 
+from graphflow.errors import BadInput
 
-class StageError(ValueError):
+
+class StageError(BadInput):
     """A stage cannot be simulated: missing file, not USD, or broken physics prims.
 
     Each problem is one line naming the file and, where there is one, the prim;

@@ -13,12 +13,30 @@ import os
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-from ..document import FORMAT_NAME, FORMAT_VERSION, GraphDocument, GraphError, parse_document
-from ..registry import Registry, default_registry
-from .node_mapping import (GENERIC_PUBLISHERS, LEGACY_GRIPPER_COMMANDS, LEGACY_GRIPPER_ID, PICK_PLACE_ID,
-                           PICK_PLACE_OLD_INPUTS, RENDERING_NODES, gather_message_fields, is_legacy_surface_gripper,
-                           legacy_gripper_command_node, legacy_gripper_renames, map_legacy_surface_gripper,
-                           map_old_pick_place, missing_target)
+from graphflow.document import (
+    FORMAT_NAME,
+    FORMAT_VERSION,
+    GraphDocument,
+    GraphError,
+    parse_document,
+)
+from graphflow.errors import BadInput
+from graphflow.registry import Registry, default_registry
+from graphflow.usd.node_mapping import (
+    GENERIC_PUBLISHERS,
+    LEGACY_GRIPPER_COMMANDS,
+    LEGACY_GRIPPER_ID,
+    PICK_PLACE_ID,
+    PICK_PLACE_OLD_INPUTS,
+    RENDERING_NODES,
+    gather_message_fields,
+    is_legacy_surface_gripper,
+    legacy_gripper_command_node,
+    legacy_gripper_renames,
+    map_legacy_surface_gripper,
+    map_old_pick_place,
+    missing_target,
+)
 
 GRAPH_TYPE = "OmniGraph"
 NODE_TYPE = "OmniGraphNode"
@@ -26,7 +44,7 @@ UI_POSITION = "ui:nodegraph:node:pos"
 EXTENDED_VALUE = "omni:graph:attrValue"
 
 
-class ImportProblem(ValueError):
+class ImportProblem(BadInput):
     """The stage or graph cannot be imported; ``problems`` lists every reason, one line each."""
 
     def __init__(self, problems: list[str]):
@@ -53,8 +71,8 @@ def import_graph(stage_path: str, *, graph_path: str | None = None, output_path:
     The document's ``settings.stage`` points at the USD file (relative to
     *output_path*'s folder when given), so the imported graph runs on the stage it came from.
     """
-    from .errors import StageError
-    from .physics_import import open_stage
+    from graphflow.usd.errors import StageError
+    from graphflow.usd.physics_import import open_stage
 
     registry = registry or default_registry()
     label = str(stage_path)

@@ -22,14 +22,31 @@ import os
 import warnings
 from pathlib import Path
 
-from .description import (AxisLimit, Articulation, Body, Drive, Joint, MassProperties, Material, Shape,
-                          StageDescription, SurfaceGripper)
 from graphflow.messages import usd_message
-
-from .authored_values import joint_problems, mass_problems, round_collider_problems, unit_mismatches
-from .errors import StageError, warn_unsupported
-from .ignored import ignored_authoring
-from graphflow.poses import AXIS_VECTORS, Pose, compose, quat_normalize, quat_rotate, relative, twist_angle
+from graphflow.poses import (
+    AXIS_VECTORS,
+    Pose,
+    compose,
+    quat_normalize,
+    quat_rotate,
+    relative,
+    twist_angle,
+)
+from graphflow.usd.authored_values import joint_problems, mass_problems, round_collider_problems, unit_mismatches
+from graphflow.usd.description import (
+    Articulation,
+    AxisLimit,
+    Body,
+    Drive,
+    Joint,
+    MassProperties,
+    Material,
+    Shape,
+    StageDescription,
+    SurfaceGripper,
+)
+from graphflow.usd.errors import StageError, warn_unsupported
+from graphflow.usd.ignored import ignored_authoring
 
 DEFAULT_GRAVITY = 9.81                 # m/s^2, along minus the up axis
 IN_MEMORY = "<in-memory stage>"

@@ -3,11 +3,11 @@ import json
 import math
 
 import pytest
+from conftest import GRAPHS
 
 from graphflow.document import dumps, load_document, parse_document
-from graphflow.keyboard import attach_keyboard, scripted_keys
+from graphflow.inputs.keyboard import attach_keyboard, scripted_keys
 from graphflow.runtime import Simulation
-from conftest import GRAPHS
 
 ROBOT_GRAPHS = ["ur10_pick_place.json", "ur10_pick_place_tuned.json", "ur10_stacking.json", "gantry_keyboard.json"]
 

@@ -12,13 +12,13 @@ SCENARIOS = ROOT / "graphs" / "scenarios"
 
 
 def run(*args):
-    return subprocess.run([sys.executable, "-m", "graphflow.cli", "run", *map(str, args)], capture_output=True, text=True)
+    return subprocess.run([sys.executable, "-m", "graphflow", "run", *map(str, args)], capture_output=True, text=True)
 
 
 @pytest.mark.slow
 def test_the_pick_that_misses_exits_1_with_the_grippers_reason_in_checks_trace_and_plot(tmp_path):
-    from graphflow.plot import timeline
-    from graphflow.trace import read_trace
+    from graphflow.observe.timeline import timeline
+    from graphflow.observe.trace import read_trace
 
     trace = tmp_path / "miss.jsonl"
     result = run(SCENARIOS / "pick_misses.json", "--trace", trace)

@@ -6,9 +6,9 @@ are authored on the in-memory root layer.
 """
 
 import pytest
+from conftest import ISAAC_GANTRY
 
 from graphflow.gripper.usd_schema import define_surface_gripper, register_schema
-from conftest import ISAAC_GANTRY
 
 GRIPPER = "/World/SurfaceGripper"
 SECOND_GRIPPER = "/World/SurfaceGripper_01"

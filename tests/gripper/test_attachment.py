@@ -5,8 +5,8 @@ import pybullet
 import pytest
 from pybullet_utils.bullet_client import BulletClient
 
-from graphflow.world import RIGID, AxisCompliance
 from graphflow.physics.attachment import PyBulletAttachments
+from graphflow.world import RIGID, AxisCompliance
 
 G = 9.81
 STEP = 1.0 / 60.0

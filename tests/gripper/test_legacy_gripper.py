@@ -11,8 +11,9 @@ import math
 import pytest
 
 from graphflow.gripper.legacy import SurfaceGripper
-from graphflow.physics import asset_path, create_world
+from graphflow.physics import create_world
 from graphflow.poses import quat_rotate, relative
+from graphflow.usd.resolver import asset_path
 
 EE = "/ur10/ee_link"
 CUBE = "/World/Cube"
@@ -23,7 +24,7 @@ ARM = "/ur10"
 
 def _ur10_world(cube_mass, gap):
     """The UR10 at its default pose over a cube on a pedestal, the cube's top *gap* below the suction point."""
-    from pxr import Gf, Sdf, Usd, UsdGeom, UsdPhysics
+    from pxr import Gf, Usd, UsdGeom, UsdPhysics
 
     stage = Usd.Stage.CreateInMemory()
     UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)
@@ -212,7 +213,7 @@ def test_the_traced_force_is_the_force_the_limit_is_compared_with():
     """Issue 26 item 4: a 1 kg cube hanging at rest from the legacy gripper (gravity on, kp = kd = 1e4): the
     trace's gripper force is its weight, m g = 9.81 N, to 2 % (the trace showed the rigid rows only: ~1e-14 N
     while the same grip broke on a 50 N force); then a 5 N limit breaks the grip with that force."""
-    from graphflow.trace import sample_grippers
+    from graphflow.observe.trace import sample_grippers
 
     world = _ur10_world(1.0, gap=0.005)
     try:

@@ -5,8 +5,12 @@ pytest.importorskip("pxr")
 
 from pxr import Gf, Sdf, Usd, UsdGeom, UsdPhysics  # noqa: E402
 
-from graphflow.gripper import apply_attachment_point_api, create_surface_gripper, manager_for  # noqa: E402
-from graphflow.testing_backend import FakeWorld  # noqa: E402
+from graphflow.gripper import (  # noqa: E402
+    apply_attachment_point_api,
+    create_surface_gripper,
+    manager_for,
+)
+from graphflow.testing.fake_world import FakeWorld  # noqa: E402
 
 BODY = "/World/Gripper"
 JOINT = "/World/Gripper/D6"

@@ -4,7 +4,8 @@ import pytest
 from pxr import Gf, Usd, UsdGeom, UsdPhysics
 
 from graphflow.gripper import manager_for
-from graphflow.physics import asset_path, create_world
+from graphflow.physics import create_world
+from graphflow.usd.resolver import asset_path
 
 GRIPPER = "/ur10/ee_link/SurfaceGripper"
 POINT = "/ur10/ee_link/attachment_joint"

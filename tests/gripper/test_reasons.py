@@ -1,5 +1,5 @@
 """Why a close failed or a grip ended: the reasons the status machine records where its status changes."""
-from graphflow.gripper.runtime import GripperStatus
+from graphflow.gripper.component import GripperStatus
 
 from .test_status_machine import _gripper, _place
 

@@ -3,11 +3,16 @@ import json
 from pathlib import Path
 
 import pytest
+from conftest import ISAAC_GANTRY
 
 from graphflow.gripper import usd_schema
-from graphflow.gripper.usd_schema import (apply_attachment_point_api, create_surface_gripper, define_surface_gripper,
-                                          read_forward_axis, register_schema)
-from conftest import ISAAC_GANTRY
+from graphflow.gripper.usd_schema import (
+    apply_attachment_point_api,
+    create_surface_gripper,
+    define_surface_gripper,
+    read_forward_axis,
+    register_schema,
+)
 
 
 @pytest.fixture

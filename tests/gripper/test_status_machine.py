@@ -7,9 +7,14 @@ tops are 10 mm below the points.
 """
 import pytest
 
-from graphflow.gripper.runtime import (SETTLING_DELAY, AttachmentPoint, GripperProperties, GripperStatus,
-                                       SurfaceGripperComponent)
-from graphflow.testing_backend import FakeWorld
+from graphflow.gripper.component import (
+    SETTLING_DELAY,
+    AttachmentPoint,
+    GripperProperties,
+    GripperStatus,
+    SurfaceGripperComponent,
+)
+from graphflow.testing.fake_world import FakeWorld
 
 STEP = 1.0 / 60.0
 DOWN = (1.0, 0.0, 0.0, 0.0)        # forward +Z turned to point down

@@ -2,11 +2,11 @@
 import math
 
 import pytest
+from conftest import GRAPHS
 
 from graphflow.document import GraphError, dumps, load_document, parse_document
 from graphflow.runtime import Simulation
 from graphflow_nodes.pick_place_sequence import shortest_turn, yaw_of
-from conftest import GRAPHS
 
 PYRAMID_PLACES = [(0.5, 0.245, 0.025), (0.5, 0.3, 0.025), (0.5, 0.355, 0.025),
                   (0.5, 0.2725, 0.075), (0.5, 0.3275, 0.075), (0.5, 0.3, 0.125)]

@@ -1,5 +1,4 @@
 """graphflow.StackingController on a fake UR10 world: cube order, stack heights, one routine per cube."""
-import numpy as np
 import pytest
 
 from graphflow.executor import GraphRuntimeError

@@ -1,4 +1,4 @@
-"""Stage nodes on a real PyBullet world, through graphflow.testing."""
+"""Stage nodes on a real PyBullet world, through graphflow.testing.harness."""
 import pytest
 
 from graphflow.physics import create_world

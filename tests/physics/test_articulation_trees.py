@@ -2,11 +2,11 @@
 import math
 
 import pytest
+from conftest import USDA_SAMPLES as SAMPLES
 from pxr import Gf, Usd, UsdGeom, UsdPhysics, UsdShade
 
 from graphflow.physics import create_world
 from graphflow.poses import compose, quat_from_axis_angle, relative
-from conftest import USDA_SAMPLES as SAMPLES
 
 KRABBY = SAMPLES / "krabby_crab_simple.usda"
 
@@ -253,7 +253,7 @@ def test_the_krabby_hexapod_stands_on_its_drives():
     """
     if not KRABBY.is_file():
         pytest.skip(f"{KRABBY} is not available")
-    from graphflow.physics.inspect import simulate_report
+    from graphflow.physics.stage_report import simulate_report
 
     report = simulate_report(str(KRABBY), 2.0)
     assert len(report["displacements"]) == 25 and len(report["drive_errors"]) == 18

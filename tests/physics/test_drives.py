@@ -127,7 +127,7 @@ def test_no_gains_blow_up(floating):
 def test_the_ur10_holds_every_target_at_stiff_gains():
     """All six UR10 drives at k = 1e7 N m/rad and d = 1e5 (coupled through the arm's inertia): no blow-up,
     each joint within 1e-4 rad of its target after 3 s (the joints move at most 2.16-3.2 rad/s)."""
-    from graphflow.physics import asset_path
+    from graphflow.usd.resolver import asset_path
 
     stage = Usd.Stage.Open(str(asset_path("ur10.usda")))
     # edits go to this stage's session layer: the asset's own layer is shared by every stage that opens it

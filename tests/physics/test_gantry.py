@@ -2,11 +2,11 @@
 import json
 
 import pytest
-
-from graphflow.physics import create_world, resolve_stage
-from graphflow.cli_stage import run_stage_command
 from conftest import ISAAC_GANTRY
 
+from graphflow.cli.stage import run_stage_command
+from graphflow.physics import create_world
+from graphflow.usd.resolver import resolve_stage
 
 
 def stage_json(capsys, path, seconds=None):

@@ -6,10 +6,10 @@ import sys
 from pathlib import Path
 
 import pytest
+from conftest import CORPUS_FILES
 
 from graphflow.physics import create_world
 from graphflow.physics.health import NonFiniteState
-from conftest import CORPUS_FILES
 
 HUMANOID = CORPUS_FILES / "newton-physics__newton" / "humanoid.usda"
 
@@ -38,7 +38,7 @@ def Sphere "Calm" (
 
 
 def graphflow(*args, cwd=None):
-    return subprocess.run([sys.executable, "-m", "graphflow.cli", *args], capture_output=True, text=True, cwd=cwd)
+    return subprocess.run([sys.executable, "-m", "graphflow", *args], capture_output=True, text=True, cwd=cwd)
 
 
 def tick_graph(folder: Path, stage: Path) -> Path:
@@ -63,7 +63,7 @@ def test_run_exits_1_on_a_diverging_stage_with_one_line(tmp_path):
     result = graphflow("run", str(tick_graph(tmp_path, stage)))
     assert result.returncode == 1
     failure, summary = result.stderr.strip().splitlines()     # the line naming the body, then the run's summary
-    assert failure == ("graphflow: run-time error: /Ball: pose or velocity is not finite after physics step 1 "
+    assert failure == (f"{tmp_path / 'graph.json'}: run-time failure: /Ball: pose or velocity is not finite after physics step 1 "
                        "(t = 0.01667 s): the simulation diverged")
     assert summary.startswith("graphflow: FAIL ")
 

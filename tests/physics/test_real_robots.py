@@ -9,10 +9,10 @@ import warnings
 from pathlib import Path
 
 import pytest
+from conftest import SHARED
 from pxr import Gf, Usd, UsdGeom, UsdPhysics
 
 from graphflow.physics import UnsupportedPrimWarning, create_world
-from conftest import SHARED
 
 CORPUS = SHARED / "isaac_corpus" / "files"
 SAMPLES = SHARED / "usda_samples"

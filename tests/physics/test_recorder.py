@@ -7,8 +7,17 @@ import numpy as np
 import pytest
 
 from graphflow import physics
-from graphflow.physics.recorder import (BACKGROUND_BOTTOM, BACKGROUND_TOP, Camera, RecordingError, VideoRecorder,
-                                        body_colours, check_encoder, framed_camera, render_frame)
+from graphflow.physics.recorder import (
+    BACKGROUND_BOTTOM,
+    BACKGROUND_TOP,
+    Camera,
+    RecordingError,
+    VideoRecorder,
+    body_colours,
+    check_encoder,
+    framed_camera,
+    render_frame,
+)
 
 SIZE = (64, 48)
 
@@ -72,7 +81,7 @@ def test_unknown_formats_and_missing_encoders_are_refused_up_front(tmp_path, mon
 
 
 def graphflow(*args, cwd):
-    return subprocess.run([sys.executable, "-m", "graphflow.cli", *args], capture_output=True, text=True, cwd=cwd)
+    return subprocess.run([sys.executable, "-m", "graphflow", *args], capture_output=True, text=True, cwd=cwd)
 
 
 def test_run_record_writes_a_gif_at_the_requested_size(tmp_path):

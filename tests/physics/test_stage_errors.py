@@ -92,7 +92,7 @@ def test_graphflow_stage_names_undriven_joints_and_other_simulators_authoring(tm
     shoulder.CreateAttribute("urdf:limit:effort", Sdf.ValueTypeNames.Float).Set(150.0)
     stage.DefinePrim("/World/Arm/shoulder_motor", "MjcActuator")
     stage.GetRootLayer().Save()
-    result = subprocess.run([sys.executable, "-m", "graphflow.cli", "stage", path, "--simulate", "0.5"],
+    result = subprocess.run([sys.executable, "-m", "graphflow", "stage", path, "--simulate", "0.5"],
                             capture_output=True, text=True, check=False)
     assert result.returncode == 0, result.stderr
     out = result.stdout

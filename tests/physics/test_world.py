@@ -5,7 +5,8 @@ import struct
 
 import pytest
 
-from graphflow.physics import create_world, resolve_stage
+from graphflow.physics import create_world
+from graphflow.usd.resolver import resolve_stage
 from graphflow.world import World, WorldError
 
 PICK_PLACE = "asset:ur10_pick_place.usda"

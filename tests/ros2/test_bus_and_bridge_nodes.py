@@ -7,12 +7,17 @@ import pytest
 pytest.importorskip("rosbags")
 
 from graphflow.cli import main  # noqa: E402
+from graphflow.document import GraphError  # noqa: E402
 from graphflow.executor import GraphRuntimeError  # noqa: E402
 from graphflow.ros2.bus import topic_bus_for  # noqa: E402
 from graphflow.ros2.messages import MessageError, complete, stamp  # noqa: E402
-from graphflow.ros2.timeline import ScriptedMessage, ScriptedTopics, TopicSpecError, parse_topic_spec  # noqa: E402
+from graphflow.ros2.timeline import (  # noqa: E402
+    ScriptedMessage,
+    ScriptedTopics,
+    TopicSpecError,
+    parse_topic_spec,
+)
 from graphflow.testing import ClockWorld, GraphHarness, NodeHarness  # noqa: E402
-from graphflow.document import GraphError  # noqa: E402
 
 BRIDGE = "isaacsim.ros2.bridge."
 

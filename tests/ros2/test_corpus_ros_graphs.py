@@ -8,8 +8,9 @@ pytest.importorskip("rosbags")
 mcap_reader = pytest.importorskip("mcap.reader")
 mcap_ros2_decoder = pytest.importorskip("mcap_ros2.decoder")
 
-from graphflow.cli import main  # noqa: E402
 from conftest import CORPUS_FILES as FILES
+
+from graphflow.cli import main  # noqa: E402
 
 pytestmark = pytest.mark.skipif(not FILES.is_dir(), reason="../shared/isaac_corpus is absent")
 

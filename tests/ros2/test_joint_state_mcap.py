@@ -16,9 +16,10 @@ pytest.importorskip("rosbags")
 mcap_reader = pytest.importorskip("mcap.reader")
 mcap_ros2_decoder = pytest.importorskip("mcap_ros2.decoder")
 
-from graphflow.cli import main  # noqa: E402
 from conftest import CORPUS_FILES as CORPUS
 from conftest import GRAPHS
+
+from graphflow.cli import main  # noqa: E402
 
 LITE6_GRAPH = CORPUS / "pastoriomarco__isaac_sim_custom_examples" / "ros_joint_states.usda"
 UR10_JOINTS = ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint",

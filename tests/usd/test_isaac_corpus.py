@@ -12,9 +12,9 @@ import json
 from dataclasses import dataclass
 
 import pytest
+from conftest import ISAAC_CORPUS as CORPUS
 
 from graphflow.cli import main
-from conftest import ISAAC_CORPUS as CORPUS
 
 pytestmark = pytest.mark.skipif(not (CORPUS / "manifest.json").is_file(), reason="../shared/isaac_corpus is absent")
 TICKS = 120
@@ -164,12 +164,15 @@ def test_robotiq_graph_without_a_robot_fails_on_its_first_joint_command(tmp_path
     assert "node 'articulation_controller'" in capsys.readouterr().err
 
 
-def test_gantry_without_its_gripper_prim_fails_when_the_button_toggles_it(tmp_path, capsys):
+def test_gantry_without_its_gripper_prim_is_refused_before_the_first_tick(tmp_path, capsys):
+    """The stage defines no /World/SurfaceGripper: run refuses it as validate does (exit 2, did-you-mean), not at tick 12."""
     stage = CORPUS / "files" / "isaac-sim__IsaacSim" / "SurfaceGripper_gantry.usda"
     graph = tmp_path / "gantry.json"
     assert main(["import", str(stage), "-o", str(graph)]) == 0
-    assert main(["run", str(graph), "--ticks", "30", "--pad", "Face Button Bottom=1@0.2"]) == 1
-    assert "node 'surface_gripper'" in capsys.readouterr().err
+    capsys.readouterr()
+    assert main(["run", str(graph), "--ticks", "30", "--pad", "Face Button Bottom=1@0.2"]) == 2
+    assert capsys.readouterr().err == (f"graphflow: error: {graph}: node 'surface_gripper' input 'inputs:SurfaceGripper': "
+                                       "no prim /World/SurfaceGripper on the stage (did you mean /World/Surface_Gripper_Joints?)\n")
 
 
 def test_ridgeback_extended_input_takes_kits_stored_value_over_the_sublayers_empty_token(tmp_path, capsys):

@@ -14,12 +14,12 @@ from pathlib import Path
 from types import SimpleNamespace
 
 import pytest
+from conftest import USDA_SAMPLES as SAMPLES
 
 from graphflow.cli import main
-from graphflow.gamepad import attach_gamepad, gamepad_for, scripted_pad
 from graphflow.gripper import manager_for
+from graphflow.inputs.gamepad import attach_gamepad, gamepad_for, scripted_pad
 from graphflow.runtime import Simulation
-from conftest import USDA_SAMPLES as SAMPLES
 
 GANTRY = SAMPLES / "isaacsim_SurfaceGripper_gantry.usda"
 GRIPPER = "/World/SurfaceGripper"

@@ -4,11 +4,10 @@ import subprocess
 import sys
 
 import pytest
+from conftest import USDA_SAMPLES as SAMPLES
 
 from graphflow.testing import GraphHarness
 from graphflow.usd.omnigraph import ImportProblem, import_graph
-from conftest import USDA_SAMPLES as SAMPLES
-
 
 TINY_GRAPH = '''#usda 1.0
 def Xform "World"
@@ -97,7 +96,7 @@ def test_cli_import_writes_once_and_refuses_to_overwrite(tiny_stage, tmp_path):
     output = tmp_path / "out.json"
 
     def run(*args):
-        return subprocess.run([sys.executable, "-m", "graphflow.cli", "import", str(tiny_stage), *args],
+        return subprocess.run([sys.executable, "-m", "graphflow", "import", str(tiny_stage), *args],
                               capture_output=True, text=True)
 
     failed = run("-o", str(output))

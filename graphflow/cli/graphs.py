@@ -1,0 +1,141 @@
+"""Commands about graph files: ``validate``, ``import``, ``new``, ``nodes``."""
+from __future__ import annotations
+
+import json
+import re
+import sys
+from pathlib import Path
+
+from graphflow.document import load_document, parse_document, save_document
+from graphflow.errors import EXIT_BAD_INPUT, EXIT_OK, BadInput
+from graphflow.files import refuse_existing
+from graphflow.registry import default_registry
+
+STARTER_GRAPH = {
+    "format": "graphflow",
+    "formatVersion": [1, 0],
+    "description": "Starter graph: counts ticks and prints every tick's count until 1 s of simulated time.",
+    "settings": {"duration": 1.0, "evaluator": "execution", "timeStep": 0.1},
+    "nodes": [
+        {"name": "on_tick", "type": "omni.graph.action.OnTick"},
+        {"name": "counter", "type": "omni.graph.action.Counter"},
+        {"name": "format_count", "type": "graphflow.FormatText", "inputs": {"format": "tick {value}"}},
+        {"name": "print", "type": "omni.graph.ui_nodes.PrintText"},
+    ],
+    "connections": [
+        {"src": "on_tick.outputs:tick", "dst": "counter.inputs:execIn"},
+        {"src": "counter.outputs:execOut", "dst": "print.inputs:execIn"},
+        {"src": "counter.outputs:count", "dst": "format_count.inputs:value"},
+        {"src": "format_count.outputs:text", "dst": "print.inputs:text"},
+    ],
+}
+_SENTENCE_END = re.compile(r"(?<!\be\.g)(?<!\bi\.e)(?<!\betc)(?<!\bvs)(?<!\.\.)[.!?](?=\s+[^\s.]|\s*$)")
+
+
+def register(commands) -> None:
+    validate = commands.add_parser(
+        "validate", help="check graph files and the stages they name without running them; print every problem")
+    validate.add_argument("graphs", nargs="+", metavar="GRAPH")
+    validate.set_defaults(handler=command_validate)
+
+    nodes = commands.add_parser("nodes", help="list the registered node types")
+    nodes.add_argument("--json", action="store_true", help="print every node spec as JSON")
+    nodes.add_argument("--markdown", action="store_true",
+                       help="print the node reference page (docs/nodes.md) generated from the specs")
+    nodes.add_argument("-o", "--output", metavar="FILE", help="with --markdown: write the page to FILE atomically")
+    nodes.add_argument("--force", action="store_true", help="overwrite an existing --output file")
+    nodes.set_defaults(handler=command_nodes)
+
+    new = commands.add_parser("new", help="write a starter graph")
+    new.add_argument("name", help="file name (.json is added if missing)")
+    new.add_argument("--force", action="store_true", help="overwrite an existing file")
+    new.set_defaults(handler=command_new)
+
+    convert = commands.add_parser("import", help="convert an Isaac Sim action graph in a USD file to a graph JSON")
+    convert.add_argument("stage", help=".usda / .usd file holding an OmniGraph prim (or asset:NAME)")
+    convert.add_argument("-o", "--output", help="graph JSON to write (default: print to stdout)")
+    convert.add_argument("--graph", help="prim path of the graph when the stage holds several")
+    convert.add_argument("--skip-unknown", action="store_true",
+                         help="drop nodes whose type graphflow does not have (and their connections) instead of failing")
+    convert.add_argument("--force", action="store_true", help="overwrite an existing output file")
+    convert.set_defaults(handler=command_import)
+
+
+def command_validate(args) -> int:
+    from graphflow.validate.preflight import file_problems
+    from graphflow.validate.stage_names import deep_validate
+
+    failed = False
+    for path in args.graphs:
+        problems, warnings_ = file_problems(path), []
+        if not problems:   # the graph and its stage load: check what the graph names on that stage
+            problems, warnings_ = deep_validate(load_document(path))
+        for problem in warnings_:
+            print(f"warning: {problem}", file=sys.stderr)
+        for problem in problems:
+            print(problem, file=sys.stderr)
+        if not problems:
+            print(f"{path}: ok")
+        failed = failed or bool(problems)
+    return EXIT_BAD_INPUT if failed else EXIT_OK
+
+
+def command_nodes(args) -> int:
+    if args.markdown or args.output:
+        return _write_node_docs(args)
+    types = default_registry().types()
+    if args.json:
+        print(json.dumps([t.spec.to_json() for t in types], indent=2))
+        return EXIT_OK
+    width = max(len(t.spec.id) for t in types)
+    for node_type in types:
+        summary = first_sentence(node_type.spec.description)
+        print(f"{node_type.spec.id:<{width}}  v{node_type.spec.version}  {summary}")
+    return EXIT_OK
+
+
+def _write_node_docs(args) -> int:
+    from graphflow.catalog.markdown import render_markdown, write_markdown
+
+    if not args.markdown or args.json:
+        raise BadInput("nodes: -o/--output writes the Markdown reference: use it with --markdown (and without --json)")
+    if not args.output:
+        sys.stdout.write(render_markdown())
+        return EXIT_OK
+    write_markdown(args.output, force=args.force)
+    print(f"wrote {args.output}")
+    return EXIT_OK
+
+
+def first_sentence(text: str) -> str:
+    """The first sentence of a description, whole (never cut at "e.g." or "..."), without its final period."""
+    match = _SENTENCE_END.search(text)
+    sentence = text[:match.start() + 1] if match else text
+    return " ".join(sentence.split()).rstrip(".")
+
+
+def command_new(args) -> int:
+    target = Path(args.name if args.name.endswith(".json") else f"{args.name}.json")
+    save_document(parse_document(json.loads(json.dumps(STARTER_GRAPH)), str(target)), target, force=args.force)
+    print(f"wrote {target}")
+    return EXIT_OK
+
+
+def command_import(args) -> int:
+    from graphflow.document import dumps
+    from graphflow.usd.omnigraph import import_graph
+    from graphflow.usd.resolver import resolve_stage
+
+    if args.output:
+        refuse_existing(args.output, args.force)
+    stage = str(resolve_stage(args.stage, Path.cwd()))
+    result = import_graph(stage, graph_path=args.graph, output_path=args.output, skip_unknown=args.skip_unknown)
+    for warning in result.warnings:
+        print(f"warning: {warning}", file=sys.stderr)
+    if args.output:
+        save_document(result.document, args.output, force=args.force)
+        print(f"wrote {args.output}: {len(result.document.nodes)} nodes, {len(result.document.connections)} "
+              f"connections from {result.graph_path}")
+    else:
+        sys.stdout.write(dumps(result.document))
+    return EXIT_OK

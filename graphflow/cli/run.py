@@ -1,0 +1,186 @@
+"""``graphflow run GRAPH``: one checked run with the terminal's listeners, traces and recordings."""
+from __future__ import annotations
+
+import argparse
+import contextlib
+import logging
+import sys
+import time
+
+from graphflow.cli import arguments
+from graphflow.document import load_document
+from graphflow.errors import EXIT_OK, EXIT_RUN_FAILED, BadInput
+from graphflow.files import atomic_output, refuse_existing
+
+
+def register(commands) -> None:
+    run = commands.add_parser("run", help="run a graph (headless unless --gui)")
+    run.add_argument("graph", help="graph JSON file")
+    run.add_argument("--ticks", type=arguments.positive_int, help="stop after N ticks")
+    run.add_argument("--seconds", type=arguments.seconds, help="stop after S simulated seconds")
+    run.add_argument("--seed", type=int, help="seed for random number generators (default: the graph's scenario seed, else 0)")
+    run.add_argument("--gui", action="store_true", help="open the PyBullet window (paced to real time, see --speed)")
+    run.add_argument("--speed", type=arguments.finite_float, default=1.0, metavar="X",
+                     help="with --gui: run at X times real time (default 1; 0 = as fast as possible)")
+    run.add_argument("--keys", metavar="FILE",
+                     help='scripted keyboard for OnKeyboardInput nodes: JSON {"keys": ["A@1.5", "Up@2-3", ...]}')
+    run.add_argument("--key", action="append", default=[], metavar="KEY@TIME",
+                     help="scripted key (repeatable): A@1.5 tap, A@1.5:down, A@1.5:up, Up@1.0-2.5 held; "
+                          "replaces the PyBullet window's keys")
+    run.add_argument("--gamepad", metavar="FILE",
+                     help='scripted gamepad for OnGamepadInput / ReadGamepadState nodes: JSON '
+                          '{"gamepad": [{"element": "Right Stick Y Axis", "time": 1.0, "value": -1.0}, ...]}')
+    run.add_argument("--pad", action="append", default=[], metavar="ELEMENT=VALUE@TIME",
+                     help='scripted gamepad element (repeatable), held until changed: "Left Stick X Axis=0.5@1.0", '
+                          '"Face Button Bottom=1@3"; "1:..." for pad 1')
+    run.add_argument("--topics", metavar="FILE",
+                     help='scripted ROS 2 topics for subscriber nodes: JSON {"topics": [{"topic": "/joint_command", '
+                          '"time": 0.5, "type": "sensor_msgs/msg/JointState", "message": {...}}, ...]}')
+    run.add_argument("--topic", action="append", default=[], metavar="TOPIC@TIME=JSON",
+                     help='scripted ROS 2 message (repeatable): \'/cmd_vel@1.0={"linear": {"x": 0.5}}\'')
+    run.add_argument("--record-topics", metavar="FILE.mcap",
+                     help="write every message ROS 2 publisher nodes publish to an MCAP file (ROS 2 CDR encoding)")
+    run.add_argument("--checks", action="store_true",
+                     help="evaluate the graph's checks even when --ticks, --seconds, --key(s), --gamepad, --pad or --gui "
+                          "change the run (by default they are evaluated only for the run as written)")
+    run.add_argument("--set", action="append", default=[], metavar="TARGET=VALUE",
+                     help="override (repeatable): NODE.INPUT=VALUE (a node input) or /Prim/Path.attribute=VALUE "
+                          "(a stage attribute, in USD units); VALUE is JSON or a plain string (docs/sweeps.md)")
+    run.add_argument("--randomize", metavar="FILE",
+                     help="draw the randomize entries of FILE (a sweep file or {\"randomize\": [...]}) from --seed")
+    run.add_argument("--log-level", default="warning", choices=["debug", "info", "warning", "error"],
+                     help="Python logging level on stderr (default warning)")
+    run.add_argument("--trace", metavar="FILE", help="write what happens every tick as JSON Lines (docs/trace.md)")
+    run.add_argument("--record", metavar="FILE", help="record a video: .gif, .mp4 (needs ffmpeg) or a folder of PNG frames")
+    run.add_argument("--fps", type=arguments.positive_float, default=15.0, help="video frames per simulated second (default 15)")
+    run.add_argument("--force", action="store_true", help="overwrite existing --trace / --record outputs")
+    run.add_argument("--size", type=arguments.size, default=(480, 360), metavar="WxH",
+                     help="video size in pixels (default 480x360)")
+    run.add_argument("--camera-target", type=arguments.point, metavar="X,Y,Z",
+                     help="point the camera looks at (default: the scene's centre)")
+    run.add_argument("--camera-distance", type=arguments.positive_float, metavar="M",
+                     help="camera distance (default: fit the scene)")
+    run.add_argument("--camera-yaw", type=arguments.finite_float, default=50.0, metavar="DEG",
+                     help="camera yaw in degrees (default 50)")
+    run.add_argument("--camera-pitch", type=arguments.finite_float, default=-30.0, metavar="DEG",
+                     help="camera pitch in degrees (default -30)")
+    run.set_defaults(handler=command_run)
+
+
+def _scripted_inputs(args, document):
+    """The run's scripted devices: the options', else (headless) the graph's own scenario section."""
+    from graphflow.inputs.gamepad import scripted_pad
+    from graphflow.inputs.keyboard import scripted_keys
+    from graphflow.ros2 import run as ros2_run
+    from graphflow.verdicts.checked_run import ScriptedInputs
+
+    keys = scripted_keys(args.keys, args.key)
+    pad = scripted_pad(args.gamepad, args.pad)
+    if not args.gui and keys is None and pad is None:
+        own = ScriptedInputs.of_document(document)
+        keys, pad = own.keys, own.pad
+    topics = ros2_run.check_options(args.topics, args.topic, args.record_topics)
+    return ScriptedInputs(keys=keys, pad=pad, topics=topics)
+
+
+def _changed_by_options(args) -> list[str]:
+    """The options that make this run differ from the graph's scenario, so its checks do not apply."""
+    options = {"--ticks": args.ticks is not None, "--seconds": args.seconds is not None, "--keys": args.keys is not None,
+               "--key": bool(args.key), "--gamepad": args.gamepad is not None, "--pad": bool(args.pad),
+               "--gui": args.gui}
+    return [name for name, given in options.items() if given]
+
+
+def command_run(args) -> int:
+    from graphflow.observe.terminal import PrintedLog, Progress, RealTimePacer
+    from graphflow.variants.randomize import variant_for_run
+    from graphflow.verdicts.checked_run import CheckedRun, RunLimits
+
+    document = load_document(args.graph)
+    seed = args.seed if args.seed is not None else int(document.scenario.get("seed", 0))
+    if args.record:
+        _check_recording(args, document)
+    if args.trace:
+        refuse_existing(args.trace, args.force)
+    inputs = _scripted_inputs(args, document)
+    variant = variant_for_run(document, args.set, args.randomize, seed)
+    changed = _changed_by_options(args)
+    checked = CheckedRun(document, source=args.graph, variant=variant, inputs=inputs,
+                         limits=RunLimits(args.ticks, args.seconds), evaluate_checks=args.checks or not changed,
+                         seed=seed, gui=args.gui, listeners=[PrintedLog()])
+    checked.preflight()   # what validate refuses fails here, before the first tick: exit 2, not a failed run
+    if args.gui:
+        from graphflow.physics.native_output import route_native_stdout_to_stderr
+
+        route_native_stdout_to_stderr()
+    # outputs are written to temporary files renamed into place when the run ends (a failed run keeps
+    # the ticks before the failure); a Ctrl-C or a broken start removes them: never half-written
+    with contextlib.ExitStack() as outputs:
+        outputs.callback(checked.close)
+        simulation = checked.start()
+        if args.record_topics:
+            from graphflow.ros2 import run as ros2_run
+
+            recording = ros2_run.attach_topics(simulation.world, None, args.record_topics)
+            outputs.push(lambda kind, _error, _trace: recording.abandon() if kind is not None else recording.close())
+        if args.trace:
+            _open_trace(args.trace, simulation, args.graph, outputs, args.force)
+        if args.record:
+            simulation.world.services.add(_start_recording(args, simulation.world, outputs))
+        if args.gui and args.speed > 0:
+            simulation.add_listener(RealTimePacer(args.speed))
+        simulation.add_listener(Progress(simulation, sys.stdout.isatty(), checked.tick_limit()))
+        started = time.perf_counter()
+        verdict = checked.run()
+    for line in verdict.failures:
+        print(line, file=sys.stderr)
+    summary = verdict.summary()
+    if document.checks and not len(checked.evaluator) and not verdict.failures:
+        summary = (f"done {args.graph}: checks not evaluated, {', '.join(changed)} changed the run "
+                   f"(--checks evaluates them) {summary[summary.rindex('('):]}")
+    print(f"graphflow: {summary}", file=sys.stderr)
+    if verdict.failures:
+        return EXIT_RUN_FAILED
+    reason = "graph finished" if verdict.stopped_by_graph else "limit reached"
+    logging.getLogger("graphflow").info("%s: %d ticks, %.3f s simulated in %.2f s wall (%s)", args.graph,
+                                        verdict.ticks, verdict.time, time.perf_counter() - started, reason)
+    return EXIT_OK
+
+
+def _check_recording(args: argparse.Namespace, document) -> None:
+    """Refuse a recording that cannot be made before the run starts, not after it ends."""
+    if document.settings.get("stage") is None:
+        raise BadInput(f"{args.graph}: --record needs a graph with a stage (settings.stage); this one has no scene")
+    from graphflow.errors import require_extra
+    from graphflow.physics.recorder import check_encoder, video_kind
+
+    kind = video_kind(args.record)
+    require_extra(f"--record {args.record}", "viz", "PIL")
+    check_encoder(args.record)
+    refuse_existing(args.record, args.force, folder=kind == "frames")
+
+
+def _start_recording(args, world, outputs: contextlib.ExitStack):
+    from graphflow.physics.recorder import Camera, VideoRecorder, video_kind
+
+    camera = Camera(args.camera_target, args.camera_distance, args.camera_yaw, args.camera_pitch)
+    folder = video_kind(args.record) == "frames"
+    temporary = outputs.enter_context(atomic_output(args.record, force=args.force, folder=folder))
+    try:
+        video = VideoRecorder(world, args.record, fps=args.fps, size=args.size, camera=camera, write_to=temporary)
+    except OSError as error:
+        raise BadInput(f"{args.record}: cannot write the video: {error.strerror or error}") from None
+    outputs.callback(video.close)   # runs before the rename into place (ExitStack unwinds last in, first out)
+    return video
+
+
+def _open_trace(path: str, simulation, graph: str, outputs: contextlib.ExitStack, force: bool):
+    from graphflow.observe.trace import TraceRecorder
+
+    temporary = outputs.enter_context(atomic_output(path, force=force))
+    try:
+        stream = outputs.enter_context(open(temporary, "w", encoding="utf-8", newline="\n"))
+    except OSError as error:
+        raise BadInput(f"{path}: cannot write the trace: {error.strerror}") from None
+    TraceRecorder(simulation, stream, graph=graph)
+    return stream

@@ -1,0 +1,1 @@
+"""Devices a graph reads: the keyboard, the gamepad, and the scripted timelines they share."""

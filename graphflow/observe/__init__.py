@@ -1,0 +1,1 @@
+"""Watching a run from outside: traces, timeline plots, graph pictures."""

@@ -1,0 +1,375 @@
+"""Run traces: what happened on every tick, as JSON Lines (format in docs/trace.md).
+
+A trace is written while a graph runs (``graphflow run GRAPH --trace FILE``) so a
+run can be read, plotted (``graphflow plot``) and compared with another
+(``graphflow trace diff``) afterwards. Every tick record holds only what changed
+on that tick, so the file stays small and two runs differ exactly where their
+behaviour does. Nothing depends on the wall clock and floats are written by
+``repr``: the same run gives a byte-identical file.
+"""
+from __future__ import annotations
+
+import json
+import os
+import platform
+import sys
+from dataclasses import dataclass
+from importlib import metadata
+from pathlib import Path
+from typing import IO, Any, Iterator
+
+from graphflow import __version__
+from graphflow.errors import BadInput
+from graphflow.types import ExecState
+
+TRACE_FORMAT = "graphflow-trace"
+TRACE_VERSION = 1
+PHASE_OUTPUT = "eventName"   # an output with this name carries a controller's phase (PickPlaceController)
+
+_STATE_SUFFIX = {ExecState.ENABLED: "", ExecState.ENABLED_AND_PUSH: ":push",
+                 ExecState.LATENT_PUSH: ":latentPush", ExecState.LATENT_FINISH: ":latentFinish"}
+
+
+class TraceError(BadInput):
+    """A trace file that cannot be read (missing, not JSON Lines, no header)."""
+
+
+def to_json_value(value: Any) -> Any:
+    """A plain JSON value for an attribute value: tuples and arrays become lists, enums their names."""
+    if value is None or isinstance(value, (bool, int, float, str)):
+        return value
+    if hasattr(value, "tolist"):       # numpy arrays and scalars
+        return to_json_value(value.tolist())
+    if isinstance(value, (tuple, list)):
+        return [to_json_value(item) for item in value]
+    if isinstance(value, dict):
+        return {str(key): to_json_value(item) for key, item in value.items()}
+    if hasattr(value, "name") and hasattr(value, "value"):   # enums
+        return value.name
+    return f"<{type(value).__name__}>"   # never repr(): it may hold a memory address
+
+
+def dumps_record(record: dict) -> str:
+    """One trace line: compact separators, keys in insertion order, floats as repr."""
+    return json.dumps(record, separators=(",", ":"), ensure_ascii=False)
+
+
+def loaded_versions() -> dict[str, str]:
+    """graphflow and Python always; pybullet and usd-core only if this run loaded them."""
+    versions = {"graphflow": __version__, "python": platform.python_version()}
+    for module, distribution, key in (("pybullet", "pybullet", "pybullet"), ("pxr", "usd-core", "usd")):
+        if module in sys.modules:
+            try:
+                versions[key] = metadata.version(distribution)
+            except metadata.PackageNotFoundError:
+                versions[key] = "unknown"
+    return versions
+
+
+def phase_outputs(compiled) -> list[str]:
+    """``node.eventName`` keys of nodes whose outputs include a phase name (controllers)."""
+    return [f"{node.name}.{PHASE_OUTPUT}" for node in compiled.nodes
+            if node.spec.attribute(f"outputs:{PHASE_OUTPUT}") is not None]
+
+
+def surface_gripper_manager(world):
+    """The world's surface-gripper manager service, or None when no node made one."""
+    from graphflow.gripper.manager import SurfaceGripperManager
+
+    return world.services.get(SurfaceGripperManager)
+
+
+def published_topics(world) -> list[dict]:
+    """ROS 2 messages published during the tick (``topic``, ``type``, ``message``), when the run has a topic bus."""
+    from graphflow.ros2.bus import published_this_tick
+
+    return published_this_tick(world)
+
+
+@dataclass(frozen=True)
+class GripperSample:
+    """One gripper as seen after a tick: status, gripped objects, holding force, held height, reason."""
+
+    status: str
+    gripped: tuple[str, ...]
+    force: float | None
+    held_z: float | None
+    reason: str = ""      # why the last close failed or grip ended (SurfaceGripperComponent.reason)
+
+    def fields(self) -> dict:
+        return {"status": self.status, "gripped": list(self.gripped), "force": self.force, "heldZ": self.held_z,
+                "reason": self.reason}
+
+
+def sample_grippers(world) -> dict[str, GripperSample]:
+    """Every surface gripper of the world: status, gripped objects, constraint force (N), held object's z (m)."""
+    manager = surface_gripper_manager(world)
+    if manager is None:
+        return {}
+    samples = {}
+    for path in sorted(getattr(manager, "components", {})):
+        gripped = tuple(manager.get_gripped_objects(path))
+        status = manager.get_gripper_status(path)
+        samples[path] = GripperSample(
+            status=getattr(status, "token", str(status)),
+            gripped=gripped,
+            force=_holding_force(manager, path) if gripped else None,
+            held_z=float(world.prim_pose(gripped[0])[0][2]) if gripped else None,
+            reason=manager.component(path).reason)
+    return samples
+
+
+def initial_grippers(world) -> list[str]:
+    """The surface grippers that exist when a run starts: the stage's gripper prims and any a node made already."""
+    description = getattr(world, "description", None)
+    on_stage = [gripper.path for gripper in getattr(description, "surface_grippers", ())]
+    return sorted(set(on_stage) | set(sample_grippers(world)))
+
+
+def _holding_force(manager, path: str) -> float | None:
+    """The largest force an attachment of this gripper carries, as its break limits see it (N)."""
+    component = manager.component(path)
+    magnitudes = [float(component.checked_force(handle)) for handle in component.handles.values()]
+    return max(magnitudes) if magnitudes else None
+
+
+class TraceRecorder:
+    """Writes the trace of a simulation's first graph instance to a text stream: a header, then a line per tick.
+
+    ``TraceRecorder(simulation, stream)`` writes the header and adds itself to the simulation's
+    listeners: it collects exec pulses as nodes compute (``on_compute``) and writes each tick after
+    it ran (``on_tick``). The stream stays open: whoever opened it closes it.
+    """
+
+    def __init__(self, simulation, stream: IO[str], *, graph: str | None = None):
+        self.simulation = simulation
+        self.stream = stream
+        self.instance = simulation.instance
+        self._pulses: list[str] = []
+        self._outputs: dict[str, Any] = {}
+        self._grippers: dict[str, dict] = {}
+        nodes = self.instance.compiled.nodes
+        self._exec_names = [frozenset(a.name for a in node.spec.exec_outputs) for node in nodes]
+        self._databases = [self.instance.database(node.name) for node in nodes]
+        self._outputs = self._output_values()
+        self._write_header(graph)
+        simulation.add_listener(self)
+
+    def on_compute(self, instance, node_name: str, fired: list[str], db) -> None:
+        if instance is not self.instance:
+            return
+        outputs = db.outputs.__dict__
+        self._pulses.extend(f"{node_name}.{name}{_STATE_SUFFIX[ExecState(outputs[name])]}" for name in fired)
+
+    def on_tick(self, simulation, tick: int) -> None:
+        """Write the tick that just ran: pulses, changed outputs, changed gripper fields, log lines."""
+        instance = self.instance
+        record: dict[str, Any] = {"tick": instance.tick_count, "t": self.simulation.world.time}
+        if self._pulses:
+            record["pulses"] = self._pulses
+            self._pulses = []
+        outputs = self._output_values()
+        changed = {key: value for key, value in outputs.items() if _changed(self._outputs.get(key, _MISSING), value)}
+        if changed:
+            record["outputs"] = changed
+        self._outputs = outputs
+        grippers = {}
+        for path, sample in sample_grippers(self.simulation.world).items():
+            fields = sample.fields()
+            previous = self._grippers.get(path, {})
+            delta = {key: value for key, value in fields.items() if _changed(previous.get(key, _MISSING), value)}
+            if delta:
+                grippers[path] = delta
+            self._grippers[path] = fields
+        if grippers:
+            record["grippers"] = grippers
+        topics = published_topics(self.simulation.world)
+        if topics:
+            record["topics"] = topics
+        logs = []
+        for event in reversed(instance.events):   # this tick's lines are the newest
+            if event.tick != instance.tick_count:
+                break
+            logs.append({"node": event.node, "level": event.level, "message": event.message})
+        if logs:
+            record["log"] = logs[::-1]
+        self.stream.write(dumps_record(record) + "\n")
+
+    def _output_values(self) -> dict[str, Any]:
+        values = {}
+        for node, database, exec_names in zip(self.instance.compiled.nodes, self._databases, self._exec_names):
+            for name, value in database.outputs.__dict__.items():
+                if name not in exec_names:
+                    values[f"{node.name}.{name}"] = to_json_value(value)
+        return values
+
+    def _write_header(self, graph: str | None) -> None:
+        document = self.simulation.document
+        world = self.simulation.world
+        compiled = self.instance.compiled
+        header = {
+            "format": TRACE_FORMAT,
+            "version": TRACE_VERSION,
+            "graph": same_path_text(graph if graph is not None else document.source),
+            "description": document.description,
+            "stage": document.settings.get("stage"),
+            "timeStep": world.time_step,
+            "nodes": {node.name: node.spec.id for node in compiled.nodes},
+            "outputs": self._outputs,
+            "phases": phase_outputs(compiled),
+            "grippers": initial_grippers(world),
+            "versions": loaded_versions(),
+        }
+        self.stream.write(dumps_record(header) + "\n")
+
+
+_MISSING = object()
+
+
+def _changed(previous: Any, value: Any) -> bool:
+    """Different as written to the trace (so a NaN that stays NaN is no change)."""
+    if previous is _MISSING:
+        return True
+    return previous != value and dumps_record(previous) != dumps_record(value)
+
+
+# ---------------------------------------------------------------- reading
+
+@dataclass(frozen=True)
+class Trace:
+    """A trace read back: the header and the tick records, in file order."""
+
+    header: dict
+    ticks: list[dict]
+
+    def series(self, key: str) -> Iterator[tuple[float, Any]]:
+        """(t, value) each time an output (``node.name``) changed."""
+        for record in self.ticks:
+            outputs = record.get("outputs", {})
+            if key in outputs:
+                yield record["t"], outputs[key]
+
+    def gripper_series(self, path: str, field: str) -> list[tuple[float, Any]]:
+        """(t, value) of one gripper field on every tick, carrying the last change forward."""
+        current, points = None, []
+        for record in self.ticks:
+            delta = record.get("grippers", {}).get(path, {})
+            if field in delta:
+                current = delta[field]
+            points.append((record["t"], current))
+        return points
+
+    @property
+    def gripper_paths(self) -> list[str]:
+        paths = set(self.header.get("grippers", []))
+        for record in self.ticks:
+            paths.update(record.get("grippers", {}))
+        return sorted(paths)
+
+
+def read_trace(path: str | Path) -> Trace:
+    """Parse a trace file; raise TraceError naming the line when it is not a trace."""
+    from graphflow.files import FileProblem, loads_strict, read_text
+
+    try:
+        lines = read_text(path).splitlines()   # regular files only: never reads /dev/zero forever
+    except FileProblem as error:
+        raise TraceError(str(error)) from None
+    records = []
+    for number, line in enumerate(lines, start=1):
+        try:
+            record = loads_strict(line, f"{path}: line {number}")
+        except FileProblem as error:
+            if number == 1:
+                raise TraceError(f"{path}: not a graphflow trace (line 1 is not a JSON header: {error.reason})") from None
+            raise TraceError(f"{path}: line {number} is not JSON: {error.reason}") from None
+        if not isinstance(record, dict):
+            raise TraceError(f"{path}: line {number} is not a JSON object")
+        if number > 1 and not isinstance(record.get("tick"), int):
+            raise TraceError(f"{path}: line {number} has no tick number")
+        records.append(record)
+    if not records or records[0].get("format") != TRACE_FORMAT:
+        raise TraceError(f"{path}: not a graphflow trace (the first line must be a header with format {TRACE_FORMAT!r})")
+    if records[0].get("version") != TRACE_VERSION:
+        raise TraceError(f"{path}: trace version {records[0].get('version')!r} is not supported (this reads {TRACE_VERSION})")
+    return Trace(records[0], records[1:])
+
+
+# ---------------------------------------------------------------- comparing
+
+def same_path_text(path):
+    """One spelling per path, so ``graphs/x.json`` and ``./graphs/x.json`` name the same graph in traces."""
+    return os.path.normpath(path).replace(os.sep, "/") if isinstance(path, str) and path else path
+
+
+HEADER_FIELDS_IGNORED_BY_DIFF = ("versions",)   # the same run on another machine is still the same run
+
+
+@dataclass(frozen=True)
+class Difference:
+    """Where two traces first part: the tick (0 for the header), the field path and both values."""
+
+    tick: int
+    time: float | None
+    field: str
+    left: Any
+    right: Any
+
+    def describe(self, left_name: str = "A", right_name: str = "B") -> str:
+        where = "header" if self.tick == 0 else f"tick {self.tick}" + (f" (t = {self.time!r} s)" if self.time is not None else "")
+        return (f"traces differ at {where}, field {self.field}:\n"
+                f"  {left_name}: {_shown(self.left)}\n  {right_name}: {_shown(self.right)}")
+
+
+_ABSENT = "<absent>"
+
+
+def _shown(value) -> str:
+    return value if value is _ABSENT else json.dumps(value)
+
+
+def first_difference(left: Trace, right: Trace) -> Difference | None:
+    """The first differing field: header (except versions), then tick by tick, fields in file order."""
+    left_header, right_header = ({key: same_path_text(value) if key == "graph" else value
+                                  for key, value in trace.header.items() if key not in HEADER_FIELDS_IGNORED_BY_DIFF}
+                                 for trace in (left, right))
+    found = _first_field(left_header, right_header, "")
+    if found is not None:
+        return Difference(0, None, found[0], found[1], found[2])
+    for left_record, right_record in zip(left.ticks, right.ticks):
+        found = _first_field(left_record, right_record, "")
+        if found is not None:
+            return Difference(left_record.get("tick", 0), left_record.get("t"), found[0], found[1], found[2])
+    if len(left.ticks) != len(right.ticks):
+        shorter = min(len(left.ticks), len(right.ticks))
+        extra = (left.ticks if len(left.ticks) > shorter else right.ticks)[shorter]
+        left_tick = left.ticks[shorter]["tick"] if len(left.ticks) > shorter else _ABSENT
+        right_tick = right.ticks[shorter]["tick"] if len(right.ticks) > shorter else _ABSENT
+        return Difference(extra["tick"], extra.get("t"), "tick", left_tick, right_tick)
+    return None
+
+
+def _first_field(left: Any, right: Any, path: str) -> tuple[str, Any, Any] | None:
+    if isinstance(left, dict) and isinstance(right, dict):
+        keys = list(left) + [key for key in right if key not in left]
+        for key in keys:
+            child = f"{path}.{key}" if path else key
+            if key not in left or key not in right:
+                return child, left.get(key, _ABSENT), right.get(key, _ABSENT)
+            found = _first_field(left[key], right[key], child)
+            if found is not None:
+                return found
+        return None
+    if isinstance(left, list) and isinstance(right, list):
+        for index, (a, b) in enumerate(zip(left, right)):
+            found = _first_field(a, b, f"{path}[{index}]")
+            if found is not None:
+                return found
+        if len(left) != len(right):
+            index = min(len(left), len(right))
+            return (f"{path}[{index}]", left[index] if index < len(left) else _ABSENT,
+                    right[index] if index < len(right) else _ABSENT)
+        return None
+    if type(left) is not type(right) or (left != right and dumps_record(left) != dumps_record(right)):
+        return path, left, right
+    return None

@@ -1,0 +1,77 @@
+"""What a command checks before it starts, so ``validate`` refuses exactly what ``run`` would.
+
+``file_problems(path)`` is ``run``'s load without the physics world: the graph
+file (strict JSON, schema, semantics) and its stage, read with usd-core by the
+same ``load_description`` that builds a world, so a stage ``run`` refuses
+(missing, unreadable, negative mass, zero-size collider, non-finite transform)
+is refused by ``validate`` with the same lines. Every problem is listed, of
+every kind, in one pass.
+"""
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from graphflow.document import GraphDocument, GraphError, Problem, load_document
+from graphflow.files import FileProblem, read_json
+
+
+def stage_problems(source: str, stage: str, base_dir: str | os.PathLike) -> list[Problem]:
+    """The problems ``run`` would find loading *stage* (a ``settings.stage`` value of the file *source*)."""
+    import warnings
+
+    from graphflow.usd.errors import StageError
+    from graphflow.usd.physics_import import load_description
+    from graphflow.usd.resolver import resolve_stage
+
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")    # unsupported prims are simulated without; not a problem
+            load_description(resolve_stage(stage, base_dir))
+    except StageError as error:
+        return stage_error_problems(source, error)
+    return []
+
+
+def stage_error_problems(source: str, error) -> list[Problem]:
+    """A ``StageError`` as problems of the graph file that names the stage."""
+    return [Problem(source, f"settings/stage: {line}") for line in error.problems]
+
+
+def file_problems(path: str | os.PathLike) -> list[Problem]:
+    """Every problem ``run`` would report loading the graph file *path*, before its first tick."""
+    source = str(path)
+    try:
+        document: GraphDocument | None = load_document(path)
+        problems: list[Problem] = []
+    except GraphError as error:
+        document, problems = None, list(error.problems)
+    if document is not None:
+        stage, base_dir = document.settings.get("stage"), document.base_dir
+    else:
+        stage, base_dir = _authored_stage(path), Path(path).resolve().parent
+    if isinstance(stage, str) and stage and not any(p.path[:2] == ("settings", "stage") for p in problems):
+        problems.extend(stage_problems(source, stage, base_dir))
+    return problems
+
+
+def _authored_stage(path) -> str | None:
+    """``settings.stage`` of a file that did not validate, when it can still be read."""
+    try:
+        data = read_json(path)
+    except FileProblem:
+        return None
+    settings = data.get("settings") if isinstance(data, dict) else None
+    return settings.get("stage") if isinstance(settings, dict) else None
+
+
+def document_problems(document: GraphDocument) -> list[Problem]:
+    """What ``validate`` refuses in a loaded document (its stage, then what it names there); ``run``'s preflight."""
+    from graphflow.validate.stage_names import deep_validate
+
+    stage = document.settings.get("stage")
+    if isinstance(stage, str) and stage:
+        problems = stage_problems(document.source, stage, document.base_dir)
+        if problems:
+            return problems
+    return deep_validate(document)[0]

@@ -1,0 +1,1 @@
+"""Variants of a run: ``--set`` overrides and seeded randomizations, applied without editing files."""

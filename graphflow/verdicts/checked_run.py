@@ -1,0 +1,271 @@
+"""The one checked run: a graph document, its variant, scripted inputs and limits in; a verdict out.
+
+``graphflow run``, ``graphflow test``, the pytest plugin and a sweep episode all run a graph through
+``CheckedRun``, so what counts as bad input, what counts as a failure and how checks are judged are
+decided here once:
+
+1. ``preflight()`` refuses, before the first tick, everything ``graphflow validate`` can know: the
+   stage, prim paths, joints, attributes and check targets the graph names (``BadInput``, exit 2).
+2. ``start()`` builds the world through the one factory (``runtime.create_world``, via the variant),
+   attaches the scripted keyboard, gamepad and topics, the check evaluator and the caller's listeners.
+3. ``run()`` ticks until the limit, the graph's duration, a ``stopsBy`` check or a stop request, and
+   returns a ``Verdict``: the failure lines (a failing node, a check that did not hold), ticks, time.
+"""
+from __future__ import annotations
+
+import contextlib
+import shlex
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Iterable, Sequence
+
+from graphflow.document import GraphDocument, load_document
+from graphflow.errors import BadInput
+from graphflow.executor import GraphRuntimeError
+from graphflow.seeding import seed_everything
+from graphflow.verdicts.checks import CheckEvaluator
+
+
+@dataclass
+class Verdict:
+    """The verdict of one run: passed, the failure lines, how long it ran, what it printed."""
+
+    path: str
+    checks: int
+    failures: list[str] = field(default_factory=list)
+    ticks: int = 0
+    time: float = 0.0
+    output: list[str] = field(default_factory=list)
+    trace: str | None = None
+    expect_failure: tuple[str, ...] = ()   # the scenario section's expectFailure texts
+    stopped_by_graph: bool = False
+    run_error: str | None = None   # the failing node's line, when the run stopped on one
+
+    @property
+    def run_passed(self) -> bool:
+        """Every check held and nothing failed: ``graphflow run`` exits 0."""
+        return not self.failures
+
+    @property
+    def passed(self) -> bool:
+        """The scenario's verdict: the run passed, or it failed as its expectFailure says."""
+        if not self.expect_failure:
+            return self.run_passed
+        return not self.run_passed and not self.missing_failures()
+
+    def missing_failures(self) -> list[str]:
+        text = "\n".join(self.failures)
+        return [expected for expected in self.expect_failure if expected not in text]
+
+    def verdict_line(self) -> str:
+        """``graphflow test``'s line: PASS, XFAIL (failed as expected) or FAIL."""
+        if not self.expect_failure:
+            return self.summary()
+        ran = self.summary().rsplit(" (", 1)[1]
+        if self.passed:
+            return f"XFAIL {self.path}: failed as expected ({ran}"
+        if self.run_passed:
+            return f"FAIL {self.path}: expected to fail ({', '.join(map(repr, self.expect_failure))}) but passed ({ran}"
+        return f"FAIL {self.path}: failed, but not with {', '.join(map(repr, self.missing_failures()))} ({ran}"
+
+    def summary(self) -> str:
+        """One line: PASS or FAIL, the file, what held or failed, ticks and simulated time."""
+        ran = f"({self.ticks} tick{'s' if self.ticks != 1 else ''}, {self.time:.3f} s simulated)"
+        if self.run_passed and not self.checks:
+            return f"done {self.path}: no checks {ran}"
+        if self.run_passed:
+            return f"PASS {self.path}: {f'{self.checks} checks hold' if self.checks > 1 else '1 check holds'} {ran}"
+        return f"FAIL {self.path}: {len(self.failures)} failure{'s' if len(self.failures) != 1 else ''} {ran}"
+
+
+@dataclass(frozen=True)
+class ScriptedInputs:
+    """The keyboard, gamepad and ROS 2 topic sources of a run (None: that device is not scripted)."""
+
+    keys: Any = None
+    pad: Any = None
+    topics: Any = None
+
+    @classmethod
+    def of_document(cls, document: GraphDocument) -> "ScriptedInputs":
+        """What the document's ``scenario`` section scripts; ``BadInput`` for a timeline that cannot be read."""
+        from graphflow.inputs.gamepad import scripted_pad
+        from graphflow.inputs.keyboard import scripted_keys
+
+        sources = []
+        for name, make in (("keys", scripted_keys), ("gamepad", scripted_pad)):
+            value = document.scenario.get(name)
+            if value is None:
+                sources.append(None)
+            elif isinstance(value, str):
+                sources.append(make(str(document.base_dir / value)))
+            else:
+                sources.append(make(None, list(value)))
+        return cls(keys=sources[0], pad=sources[1])
+
+    def attach(self, world) -> None:
+        """Make the scripted devices services of *world* (they replace a window's or a browser's input)."""
+        if self.keys is not None:
+            from graphflow.inputs.keyboard import attach_keyboard
+
+            attach_keyboard(world, self.keys)
+        if self.pad is not None:
+            from graphflow.inputs.gamepad import attach_gamepad
+
+            attach_gamepad(world, self.pad)
+        if self.topics is not None:
+            from graphflow.ros2.bus import attach_transport
+
+            attach_transport(world, self.topics)
+
+
+@dataclass(frozen=True)
+class RunLimits:
+    """How long a run may go: ticks and/or simulated seconds (None: the graph's duration or stopsBy check)."""
+
+    ticks: int | None = None
+    seconds: float | None = None
+
+    @property
+    def given(self) -> bool:
+        return self.ticks is not None or self.seconds is not None
+
+
+def run_seconds(document: GraphDocument, evaluator: CheckEvaluator, limits: RunLimits) -> float | None:
+    """The run's time limit: the one given, else the graph's duration, capped by a stopsBy check."""
+    if limits.given:
+        return limits.seconds
+    seconds = document.settings.get("duration")
+    stop_by = evaluator.time_limit()
+    if stop_by is not None and (seconds is None or seconds > stop_by):
+        seconds = stop_by
+    return seconds
+
+
+def rerun_command(path: str) -> str:
+    """The shell command that repeats a scenario's run (add --trace FILE to record it again)."""
+    return shlex.join(("graphflow", "run", path))
+
+
+def preflight_problems(document: GraphDocument) -> list[str]:
+    """What ``graphflow validate`` would refuse in an already loaded document, one line each."""
+    from graphflow.validate.preflight import document_problems
+
+    return [str(problem) for problem in document_problems(document)]
+
+
+class CheckedRun:
+    """One run of a graph, checked: preflight, world, inputs, listeners, ticks, verdict.
+
+    *document* is the graph as loaded; *variant* (``graphflow.variants.overrides.Variant``) its node
+    overrides and stage edits (None: the document as it is). ``evaluate_checks`` False runs the
+    graph without judging its checks (``graphflow run --ticks`` and the like change the run the checks
+    were written for). *simulation* reuses a built simulation (a sweep worker's), already reset, whose
+    listeners its owner attached once; *evaluator* is then the check evaluator among them.
+    """
+
+    def __init__(self, document: GraphDocument, *, source: str | None = None, variant: Any = None,
+                 inputs: ScriptedInputs = ScriptedInputs(), limits: RunLimits = RunLimits(),
+                 evaluate_checks: bool = True, seed: int | None = None, gui: bool = False,
+                 listeners: Iterable[Any] = (), simulation: Any = None, evaluator: CheckEvaluator | None = None):
+        self.source = source or document.source
+        self.variant = variant
+        self.document = variant.document if variant is not None else document
+        self.inputs = inputs
+        self.limits = limits
+        self.seed = int(document.scenario.get("seed", 0)) if seed is None else seed
+        self.gui = gui
+        self.evaluator = evaluator or CheckEvaluator(self.document if evaluate_checks else None)
+        self.listeners = list(listeners)
+        self.simulation = simulation
+        self._attached = simulation is not None
+        self.verdict = Verdict(self.source, len(self.evaluator),
+                               expect_failure=tuple(self.document.scenario.get("expectFailure", ())))
+
+    def preflight(self) -> None:
+        """Refuse what ``validate`` refuses, before anything is built: ``BadInput`` with every problem."""
+        problems = preflight_problems(self.document)
+        if problems:
+            raise BadInput("\n".join(problems))
+
+    def start(self):
+        """Seed, build the world (the one factory), attach inputs and listeners; returns the simulation."""
+        from graphflow.runtime import Simulation
+
+        seed_everything(self.seed)
+        if self._attached:
+            return self.simulation
+        world = self.variant.create_world(gui=self.gui) if self.variant is not None else None
+        self.simulation = Simulation(self.document, world=world, gui=self.gui)
+        self.inputs.attach(self.simulation.world)
+        for listener in (*self.listeners, self.evaluator):
+            self.simulation.add_listener(listener)
+        self._attached = True
+        return self.simulation
+
+    def time_limit(self) -> float | None:
+        return run_seconds(self.document, self.evaluator, self.limits)
+
+    def tick_limit(self) -> int | None:
+        return self.simulation.tick_limit(ticks=self.limits.ticks, seconds=self.time_limit())
+
+    def run(self) -> Verdict:
+        """Tick to the end and judge; a failing node is a failure line, never an exception."""
+        simulation = self.simulation if self._attached else self.start()
+        verdict = self.verdict
+        try:
+            result = simulation.run(ticks=self.limits.ticks, seconds=self.time_limit())
+        except GraphRuntimeError as error:
+            if isinstance(error.__cause__, BrokenPipeError):
+                raise   # the reader of our output has gone: not the graph's failure
+            verdict.run_error = str(error)
+            verdict.failures.append(f"{self.source}: run-time failure: {error}")
+            verdict.ticks, verdict.time = simulation.instance.tick_count, simulation.world.time
+            return verdict
+        verdict.ticks, verdict.time, verdict.stopped_by_graph = result.ticks, result.time, result.stopped_by_graph
+        verdict.failures.extend(str(failure) for failure in self.evaluator.finish(simulation, result))
+        return verdict
+
+    def close(self) -> None:
+        if self.simulation is not None:
+            self.simulation.close()
+
+
+class CollectedLog:
+    """Run listener keeping the graph's log lines, warnings and errors marked, for a scenario's report."""
+
+    def __init__(self, lines: list[str]):
+        self.lines = lines
+
+    def on_log(self, event) -> None:
+        if event.level in ("warning", "warn", "error"):
+            self.lines.append(f"{event.level.upper()}: {event.node}: {event.message}")
+        else:
+            self.lines.append(event.message)
+
+
+def run_checked(path: str | Path, *, trace: str | Path | None = None,
+                listeners: Sequence[Any] = ()) -> Verdict:
+    """Run the scenario file at *path* headless with its scripted inputs and judge its checks.
+
+    Bad input (a graph that does not load, a misspelled prim or check target, a missing key file,
+    no run limit) raises ``BadInput``; a run-time failure is a failed verdict naming the node.
+    """
+    path = str(path)
+    document = load_document(path)
+    checked = CheckedRun(document, source=path, inputs=ScriptedInputs.of_document(document),
+                         listeners=listeners)
+    checked.preflight()
+    if checked.time_limit() is None:   # a scenario must end by itself: nothing hangs
+        raise BadInput(f"{path}: no run limit: give settings.duration or a stopsBy check")
+    checked.listeners.append(CollectedLog(checked.verdict.output))
+    with contextlib.ExitStack() as closing:
+        closing.callback(checked.close)
+        simulation = checked.start()
+        if trace is not None:
+            from graphflow.observe.trace import TraceRecorder
+
+            stream = closing.enter_context(open(trace, "w", encoding="utf-8", newline="\n"))
+            TraceRecorder(simulation, stream, graph=path)
+            checked.verdict.trace = str(trace)
+        return checked.run()

@@ -1,0 +1,90 @@
+"""pytest plugin: scenario graphs (graph files with checks) as test items, so one pytest run covers both.
+
+Opt-in, so installing graphflow never changes another project's test run:
+collection starts when the ini option ``graphflow_scenarios = true`` is set
+(pyproject's ``[tool.pytest.ini_options]``) or ``--graphflow-scenarios`` is
+given. Then every ``*.json`` graph with a ``checks`` section that pytest visits
+(for example a folder listed in ``testpaths``) becomes one item. A failure
+shows the failed checks, the kept trace and the command that re-runs it.
+Items carry the marker ``graphflow_scenario`` (``-m 'not graphflow_scenario'`` skips them).
+Registered through the ``pytest11`` entry point ``graphflow``.
+"""
+from __future__ import annotations
+
+import tempfile
+from pathlib import Path
+
+import pytest
+
+
+def pytest_addoption(parser):
+    parser.addini("graphflow_scenarios", "collect graph files with checks as test items", type="bool", default=False)
+    parser.addoption("--graphflow-scenarios", action="store_true", default=False,
+                     help="collect graph files with checks (graphflow scenarios) as test items")
+
+
+def pytest_configure(config):
+    config.addinivalue_line("markers", "graphflow_scenario: a graph with checks run as a test item "
+                                       "(deselect with -m 'not graphflow_scenario')")
+
+
+def _enabled(config) -> bool:
+    return config.getoption("--graphflow-scenarios") or config.getini("graphflow_scenarios")
+
+
+def pytest_collect_file(parent, file_path: Path):
+    if file_path.suffix != ".json" or not _enabled(parent.config):
+        return None
+    from graphflow.verdicts.suite import scenario_problem
+
+    problem = scenario_problem(file_path)
+    if problem is False:
+        return None
+    return ScenarioFile.from_parent(parent, path=file_path, problem=problem)
+
+
+class ScenarioFile(pytest.File):
+    """A scenario file; one that does not parse, or looks like a graph and does not load, is a collection error."""
+
+    def __init__(self, *, problem: str | None = None, **kwargs):
+        super().__init__(**kwargs)
+        self.problem = problem
+
+    def collect(self):
+        if self.problem is not None:
+            raise self.CollectError(self.problem)
+        yield ScenarioItem.from_parent(self, name=self.path.name)
+
+
+class ScenarioFailed(Exception):
+    """A scenario's verdict was a failure; the args are the lines to show."""
+
+
+class ScenarioItem(pytest.Item):
+    def __init__(self, **kwargs):
+        super().__init__(**kwargs)
+        self.add_marker("graphflow_scenario")
+
+    def runtest(self):
+        from graphflow.errors import BadInput
+        from graphflow.verdicts.checked_run import rerun_command, run_checked
+
+        trace = Path(tempfile.mkdtemp(prefix="graphflow-scenario-")) / f"{self.path.stem}.jsonl"
+        try:
+            result = run_checked(self.path, trace=trace)
+        except BadInput as error:   # the graph, its stage, a check target or a key file
+            raise ScenarioFailed(*error.lines()) from None
+        if result.passed:
+            trace.unlink()
+            trace.parent.rmdir()
+            return
+        lines = [result.verdict_line(), *result.failures, f"trace: {trace}", f"re-run: {rerun_command(str(self.path))}"]
+        raise ScenarioFailed(*lines)
+
+    def repr_failure(self, excinfo, style=None):
+        if isinstance(excinfo.value, ScenarioFailed):
+            return "\n".join(excinfo.value.args)
+        return super().repr_failure(excinfo, style)
+
+    def reportinfo(self):
+        return self.path, None, f"scenario {self.path.name}"
