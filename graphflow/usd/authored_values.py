@@ -7,6 +7,7 @@ import math
 
 JOINT_FRAME = ("physics:localPos0", "physics:localPos1", "physics:localRot0", "physics:localRot1")
 DRIVE_VALUES = ("stiffness", "damping", "targetPosition", "targetVelocity", "maxForce")
+INERTIA_ROUNDING = 0.01     # a largest principal moment up to 1 % over the sum of the other two is rounding
 
 
 def _shown(value) -> str:
@@ -39,6 +40,24 @@ def mass_problems(prim, where: str) -> list[str]:
     if centre is not None and not (all(math.isfinite(c) for c in centre) or all(c == -math.inf for c in centre)):
         problems.append(f"{where}: physics:centerOfMass is {_shown(centre)}; a centre of mass must be finite")
     return problems
+
+
+def inertia_on_triangle(diagonal: tuple) -> tuple[tuple, str | None, str | None]:
+    """(moments, why they are refused or None, how they were rounded or None): each principal moment must be
+    at most the sum of the other two (the triangle inequality every rigid body meets; PyBullet's inverse
+    dynamics checks it strictly). Within INERTIA_ROUNDING (a thin disc or rod rounded in a converted URDF)
+    the largest is lowered onto the bound; beyond, the moments are refused."""
+    largest = max(range(3), key=lambda axis: diagonal[axis])
+    others = sum(diagonal) - diagonal[largest]
+    if diagonal[largest] <= others:
+        return diagonal, None, None
+    moments = "(" + ", ".join(f"{value:g}" for value in diagonal) + ") kg m^2"
+    if diagonal[largest] - others > INERTIA_ROUNDING * diagonal[largest]:
+        return diagonal, (f"principal moments of inertia {moments} break the triangle inequality "
+                          f"({'xyz'[largest]} exceeds the sum of the other two): no rigid body has them"), None
+    rounded = tuple(others if axis == largest else diagonal[axis] for axis in range(3))
+    return rounded, None, (f"principal moments of inertia {moments} rounded onto the triangle inequality "
+                           "(the largest lowered to the sum of the other two)")
 
 
 def round_collider_problems(prim, where: str) -> list[str]:

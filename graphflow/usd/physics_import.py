@@ -32,7 +32,13 @@ from graphflow.poses import (
     relative,
     twist_angle,
 )
-from graphflow.usd.authored_values import joint_problems, mass_problems, round_collider_problems, unit_mismatches
+from graphflow.usd.authored_values import (
+    inertia_on_triangle,
+    joint_problems,
+    mass_problems,
+    round_collider_problems,
+    unit_mismatches,
+)
 from graphflow.usd.description import (
     Articulation,
     AxisLimit,
@@ -54,7 +60,6 @@ IN_MEMORY = "<in-memory stage>"
 # mass; PyBullet needs some, so 1 g on a 1 cm sphere (2/5 m r^2), not the 1 kg that sagged converted arms
 FRAME_BODY_MASS = 1.0e-3               # kg
 FRAME_BODY_INERTIA = 0.4 * FRAME_BODY_MASS * 0.01 ** 2    # kg m^2
-INERTIA_ROUNDING = 0.01                # a largest principal moment up to 1 % over the other two is rounding
 
 
 def open_stage(stage_or_path):
@@ -436,26 +441,13 @@ class _Importer:
             # changed from run to run, and so did the simulation). Use the body's own geometry instead.
             diagonal, principal_axes = _geometry_inertia(self._fallback_shapes(prim, body), mass,
                                                          self._vec(center), diagonal)
-        diagonal = self._valid_inertia(prim, diagonal)
+        diagonal, refused, rounded = inertia_on_triangle(diagonal)
+        if refused:
+            self._fail(f"body {prim.GetPath()}: {refused}")
+        if rounded:
+            self._unsupported(str(prim.GetPath()), rounded)
         return MassProperties(mass=mass, center_of_mass=self._vec(center), diagonal_inertia=diagonal,
                               principal_axes=principal_axes)
-
-    def _valid_inertia(self, prim, diagonal: tuple) -> tuple:
-        """The principal moments, each at most the sum of the other two (the triangle inequality every rigid
-        body meets, which PyBullet's inverse dynamics checks strictly). Within INERTIA_ROUNDING of it (a
-        thin disc or rod rounded in a converted URDF) the largest is lowered onto the bound and named;
-        beyond, the stage is refused naming the body and the moments."""
-        largest = max(range(3), key=lambda axis: diagonal[axis])
-        others = sum(diagonal) - diagonal[largest]
-        if diagonal[largest] <= others:
-            return diagonal
-        moments = "(" + ", ".join(f"{value:g}" for value in diagonal) + ") kg m^2"
-        if diagonal[largest] - others > INERTIA_ROUNDING * diagonal[largest]:
-            self._fail(f"body {prim.GetPath()}: principal moments of inertia {moments} break the triangle "
-                       f"inequality ({'xyz'[largest]} exceeds the sum of the other two): no rigid body has them")
-        self._unsupported(str(prim.GetPath()), f"principal moments of inertia {moments} rounded onto the triangle "
-                          "inequality (the largest lowered to the sum of the other two)")
-        return tuple(others if axis == largest else diagonal[axis] for axis in range(3))
 
     def _fallback_shapes(self, prim, body: Body) -> list[Shape]:
         """Shapes to take a body's inertia from when it has no enabled collider: its disabled
