@@ -143,8 +143,8 @@ class JointControl:
     def _joint_gravity(self, articulation: ArticulationHandle, positions: list[float]) -> tuple[np.ndarray, list]:
         """(gravity load, gravity-cancelling torques) on the DOFs, PyBullet coordinates.
 
-        The load is the sum of J^T m g, J at each link's centre of mass, over the links whose gravity is on (the base's weight goes to
-        whatever holds the base). On a fixed base, the links whose gravity is off get joint torques
+        The load is the sum of J^T m g, J at each link's centre of mass, over the links whose gravity is on
+        (the base's weight goes to whatever holds the base). On a fixed base, the links whose gravity is off get joint torques
         that cancel their weight: from one inverse-dynamics call, G = -(sum over all links).
         """
         on, cancel_off = self._gravity_plan(articulation)
