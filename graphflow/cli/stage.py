@@ -100,7 +100,9 @@ def print_stage_report(report: dict, simulation: dict | None) -> None:
         print(f"  {item['path']}: {item['what']}")
     if simulation is not None:
         worst = simulation["max_displacement"]
-        held = "drives at their targets" if simulation["drive_errors"] else "no drives: every joint free"
+        free = sum(len(articulation["undriven_joints"]) for articulation in report["articulations"])
+        held = ("no drives: every joint free" if not simulation["drive_errors"] else "drives at their targets"
+                + (f"; {free} joints without a drive free" if free else ""))
         print(f"simulated {simulation['seconds']:g} s ({simulation['steps']} steps), {held}")
         if worst["path"] is not None:
             print(f"  largest displacement of a free body: {worst['path']} moved {worst['distance'] * 1000:.2f} mm")

@@ -68,39 +68,59 @@ def test_a_disc_rounded_past_the_triangle_inequality_is_lowered_onto_it_and_name
     assert any("rounded onto the triangle inequality" in str(w.message) for w in caught)
 
 
-def test_graphflow_stage_names_undriven_joints_and_other_simulators_authoring(tmp_path):
-    """A converted UR5e without drives, carrying MuJoCo, Newton and URDF authoring: `graphflow stage` names all
-    six free joints and every prim whose authoring it ignores, and never says the drives hold (the arm falls)."""
-    import subprocess
-    import sys
-
-    from pxr import Sdf, Usd, UsdPhysics
+def ur5e_without_drives(tmp_path, joints) -> str:
+    """The UR5e's .usda with the drives of *joints* (1-6) removed."""
+    from pxr import Usd
 
     from .arms import UR5E, write_usda
 
     path = write_usda(UR5E, tmp_path / "ur5e_bare.usda")
     stage = Usd.Stage.Open(path)
-    for joint in range(1, 7):
+    for joint in joints:
         prim = stage.GetPrimAtPath(f"/World/Arm/joint{joint}")
         prim.RemoveAPI(UsdPhysics.DriveAPI, "angular")
         for name in list(prim.GetPropertyNames()):
             if name.startswith("drive:"):
                 prim.RemoveProperty(name)
+    stage.GetRootLayer().Save()
+    return path
+
+
+def stage_command(path, *options) -> str:
+    import subprocess
+    import sys
+
+    result = subprocess.run([sys.executable, "-m", "graphflow", "stage", path, *options],
+                            capture_output=True, text=True, check=False)
+    assert result.returncode == 0, result.stderr
+    return result.stdout
+
+
+def test_graphflow_stage_names_undriven_joints_and_other_simulators_authoring(tmp_path):
+    """A converted UR5e without drives, carrying MuJoCo, Newton and URDF authoring: `graphflow stage` names all
+    six free joints and every prim whose authoring it ignores, and never says the drives hold (the arm falls)."""
+    from pxr import Sdf, Usd
+
+    path = ur5e_without_drives(tmp_path, range(1, 7))
+    stage = Usd.Stage.Open(path)
     shoulder = stage.GetPrimAtPath("/World/Arm/joint2")
     shoulder.CreateAttribute("mjc:armature", Sdf.ValueTypeNames.Float).Set(0.1)
     shoulder.CreateAttribute("newton:damping", Sdf.ValueTypeNames.Float).Set(2.0)
     shoulder.CreateAttribute("urdf:limit:effort", Sdf.ValueTypeNames.Float).Set(150.0)
     stage.DefinePrim("/World/Arm/shoulder_motor", "MjcActuator")
     stage.GetRootLayer().Save()
-    result = subprocess.run([sys.executable, "-m", "graphflow", "stage", path, "--simulate", "0.5"],
-                            capture_output=True, text=True, check=False)
-    assert result.returncode == 0, result.stderr
-    out = result.stdout
+    out = stage_command(path, "--simulate", "0.5")
     assert "without a drive (free): " + ", ".join(f"/World/Arm/joint{j}" for j in range(1, 7)) in out
     assert "/World/Arm/joint2: MuJoCo and Newton and URDF attributes mjc:armature, newton:damping, " \
            "urdf:limit:effort not simulated" in out
     assert "/World/Arm/shoulder_motor: MuJoCo prim MjcActuator not simulated" in out
     assert "drives at their targets" not in out and "no drives: every joint free" in out
+
+
+def test_graphflow_stage_counts_the_free_joints_of_a_partly_driven_arm(tmp_path):
+    out = stage_command(ur5e_without_drives(tmp_path, (4, 6)), "--simulate", "0.2")
+    assert "without a drive (free): /World/Arm/joint4, /World/Arm/joint6" in out
+    assert "drives at their targets; 2 joints without a drive free" in out
 
 
 @pytest.mark.parametrize("geometry, size, message", [
