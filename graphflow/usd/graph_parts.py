@@ -20,7 +20,7 @@ VARIABLE_NODES = ("omni.graph.core.ReadVariable", "omni.graph.core.WriteVariable
 
 # USD value type name -> graphflow type name (graphflow.types)
 _ROLES = {"vector": "vector", "point": "point", "normal": "normal", "color": "color", "texCoord": ""}
-_SCALARS = ("bool", "int", "int64", "uint", "uint64", "float", "double", "half", "token", "string")
+_SCALARS = ("bool", "uchar", "int", "int64", "uint", "uint64", "float", "double", "half", "token", "string")
 
 # (node type id, authored version) -> {old port: new port, or None when the port was removed}
 # from Isaac's updateNodeVersion code (isaacsim.ros2.nodes, isaacsim.sensors.physx)

@@ -47,6 +47,8 @@ STAGE_INPUTS = {
     "omni.graph.nodes.FindPrims": {"rootPrim": "/World", "type": "Cube"},
     "isaacsim.core.nodes.IsaacComputeTransformTree": {"targetPrims": [UR10, CUBE]},
     "isaacsim.core.nodes.IsaacArticulationState": {"targetPrim": UR10, "jointNames": ["elbow_joint"]},
+    "isaacsim.sensors.physics.IsaacReadEffortSensor": {"prim": UR10 + "/wrist_2_link/wrist_3_joint"},
+    "isaacsim.sensors.physics.IsaacReadJointState": {"prim": UR10},
 }
 
 TYPES = default_registry().types()
