@@ -5,7 +5,6 @@ import pytest
 
 from graphflow.physics import create_world
 from graphflow.testing import NodeHarness
-
 from tests.physics.test_drives import LOAD_FORCE, slide_stage
 
 STIFFNESS = 1e4
