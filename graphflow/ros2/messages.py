@@ -69,7 +69,7 @@ def _complete_value(kind, value, where: str):
     node_type, details = kind
     node_name = getattr(node_type, "name", str(node_type))
     if node_name == "BASE":
-        return _primitive(details[0], value, where)
+        return primitive(details[0], value, where)
     if node_name == "NAME":
         return _complete_fields(details, {} if value is None else value, where)
     element, length = details
@@ -88,7 +88,8 @@ def _complete_value(kind, value, where: str):
     return items
 
 
-def _primitive(base: str, value, where: str):
+def primitive(base: str, value, where: str):
+    """*value* as a ROS 2 primitive of type *base* (default when None); MessageError names *where*."""
     if base in STRING_TYPES:
         if value is None:
             return ""

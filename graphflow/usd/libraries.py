@@ -14,10 +14,10 @@ from dataclasses import dataclass
 
 from graphflow.usd.node_mapping import RENDERING_NODES
 
-NEEDS_EFFORT = "needs measured joint efforts, which graphflow's world does not report yet"
 NOT_YET = "not carried over yet"
 HOST = "reads the host machine (environment, files, wall clock): not reproducible, so not carried over"
-SERVICES = "ROS 2 services (request/response) are not on graphflow's topic bus yet"
+PRIM_SERVICES = ("serves Isaac's own isaac_ros2_messages service types (prim list, attribute read/write), "
+                 "defined in Isaac's ROS workspace, not among graphflow's service types yet")
 TEST_ONLY = "Isaac's internal test node"
 EDITOR = "sets up a robot in the editor, not at run time"
 EVENTS = "Kit application and message-bus events do not exist in a headless graphflow run"
@@ -38,13 +38,13 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
     "omni.graph.action": _ids("omni.graph.action", {
         "AddPrimRelationship": PRIM_EDIT, "Branch": None, "Countdown": None, "Counter": None, "Delay": None,
         "ExitApplication": EVENTS, "FlipFlop": None, "ForEach": None, "ForLoop": None, "Gate": None,
-        "Multigate": NOT_YET, "Multisequence": None, "OnClosing": EVENTS, "OnCustomEvent": EVENTS,
+        "Multigate": None, "Multisequence": None, "OnClosing": EVENTS, "OnCustomEvent": EVENTS,
         "OnGamepadInput": None, "OnImpulseEvent": None, "OnKeyboardInput": None, "OnLoaded": None,
         "OnMessageBusEvent": EVENTS, "OnMouseInput": "needs Kit's viewport mouse (no GUI headless)",
         "OnObjectChange": NOT_YET, "OnPlaybackTick": None, "OnStageEvent": None, "OnTick": None,
         "OnVariableChange": None, "Once": None, "RationalTimeSyncGate": NOT_YET, "SendCustomEvent": EVENTS,
         "SendMessageBusEvent": EVENTS, "Sequence": None, "SetPrimActive": PRIM_EDIT, "SwitchToken": None,
-        "SyncGate": NOT_YET}),
+        "SyncGate": None}),
     "omni.graph.nodes": _ids("omni.graph.nodes", {
         "Add": None, "ArrayGetSize": None, "ArrayIndex": None, "BooleanAnd": None, "BooleanNot": None,
         "BooleanOr": None, "BreakVector3": None, "BreakVector4": None, "Clamp": None, "Compare": None,
@@ -71,8 +71,8 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "IsaacSimulationGate": None, "IsaacTestNode": TEST_ONLY, "IsaacTimeSplitter": None,
         "OgnIsaacRunOneSimulationFrame": None, "OgnIsaacScaleToFromStageUnit": None, "OnPhysicsStep": None}),
     "isaacsim.ros2.bridge / isaacsim.ros2.nodes": _ids(_ROS2, {
-        "OgnROS2ServiceClient": SERVICES, "OgnROS2ServiceServerRequest": SERVICES,
-        "OgnROS2ServiceServerResponse": SERVICES, "ROS2CameraHelper": None, "ROS2CameraInfoHelper": None,
+        "OgnROS2ServiceClient": None, "OgnROS2ServiceServerRequest": None,
+        "OgnROS2ServiceServerResponse": None, "ROS2CameraHelper": None, "ROS2CameraInfoHelper": None,
         "ROS2Context": None, "ROS2PublishAckermannDrive": "ackermann_msgs is not among the standard message types",
         "ROS2PublishBbox2D": None, "ROS2PublishBbox3D": None, "ROS2PublishCameraInfo": None,
         "ROS2PublishClock": None, "ROS2PublishCompressedImage": None, "ROS2PublishImage": None,
@@ -80,17 +80,17 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ROS2PublishObjectIdMap": None, "ROS2PublishOdometry": None, "ROS2PublishPointCloud": None,
         "ROS2PublishRawTransformTree": None, "ROS2PublishSemanticLabels": None, "ROS2PublishTransformTree": None,
         "ROS2Publisher": None, "ROS2QoSProfile": None, "ROS2RtxLidarHelper": None,
-        "ROS2RtxLidarPointCloudConfig": None, "ROS2RtxRadarHelper": None, "ROS2ServicePrim": SERVICES,
+        "ROS2RtxLidarPointCloudConfig": None, "ROS2RtxRadarHelper": None, "ROS2ServicePrim": PRIM_SERVICES,
         "ROS2SubscribeAckermannDrive": "ackermann_msgs is not among the standard message types",
         "ROS2SubscribeClock": None, "ROS2SubscribeJointState": None, "ROS2SubscribeTransformTree": NOT_YET,
         "ROS2SubscribeTwist": None, "ROS2Subscriber": None}),
     "isaacsim.robot.wheeled_robots": _ids(_WHEELED, {
         "AckermannController": None, "CheckGoal2D": None, "DifferentialController": None, "HolonomicController": None,
-        "HolonomicRobotUsdSetup": EDITOR, "QuinticPathPlanner": NOT_YET,
-        "StanleyControlPID": NOT_YET}),
+        "HolonomicRobotUsdSetup": EDITOR, "QuinticPathPlanner": None,
+        "StanleyControlPID": None}),
     "isaacsim.sensors.physics": _ids(_SENSORS, {
-        "IsaacReadContactSensor": None, "IsaacReadEffortSensor": NEEDS_EFFORT, "IsaacReadIMU": None,
-        "IsaacReadJointState": NOT_YET, "IsaacReadRaycastSensor": NOT_YET}),
+        "IsaacReadContactSensor": None, "IsaacReadEffortSensor": None, "IsaacReadIMU": None,
+        "IsaacReadJointState": None, "IsaacReadRaycastSensor": NOT_YET}),
     "isaacsim.robot.surface_gripper": {"isaacsim.robot.surface_gripper.SurfaceGripper": None},
     "isaacsim.asset.gen.conveyor": {"isaacsim.asset.gen.conveyor.IsaacConveyor": None},
 }

@@ -78,7 +78,9 @@ COMMAND_NODE_SUFFIX = "_command"
 PICK_PLACE_ID = "graphflow.PickPlaceController"
 PICK_PLACE_OLD_INPUTS = ("robotModel", "robotPrimPath", "usePath", "targetPrim")
 
-GENERIC_PUBLISHERS = ("isaacsim.ros2.bridge.ROS2Publisher", "omni.isaac.ros2_bridge.ROS2Publisher")
+# nodes whose per-field dynamic inputs (message fields; a service's Request:* / Response:*) become messageFields
+GENERIC_PUBLISHERS = ("isaacsim.ros2.bridge.ROS2Publisher", "omni.isaac.ros2_bridge.ROS2Publisher",
+                      "isaacsim.ros2.bridge.OgnROS2ServiceClient", "isaacsim.ros2.bridge.OgnROS2ServiceServerResponse")
 GENERIC_SUBSCRIBERS = ("isaacsim.ros2.bridge.ROS2Subscriber", "omni.isaac.ros2_bridge.ROS2Subscriber")
 MESSAGE_FIELDS = "messageFields"
 
