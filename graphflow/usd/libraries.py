@@ -63,7 +63,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "IsaacAttachHydraTexture": None, "IsaacComputeOdometry": None, "IsaacComputeTransformTree": None,
         "IsaacConvertDepthToPointCloud": None, "IsaacConvertRGBAToRGB": None, "IsaacCreateRenderProduct": None,
         "IsaacCreateViewport": None, "IsaacGenerate32FC1": None, "IsaacGenerateRGBA": None,
-        "IsaacGetViewportRenderProduct": None, "IsaacJointNameResolver": NOT_YET,
+        "IsaacGetViewportRenderProduct": None, "IsaacJointNameResolver": None,
         "IsaacPassthroughImagePtr": None, "IsaacReadCameraInfo": None, "IsaacReadEnvVar": HOST,
         "IsaacReadFilePath": HOST, "IsaacReadSimulationTime": None, "IsaacReadSimulationTimeAnnotator": None,
         "IsaacReadSystemTime": HOST, "IsaacReadSystemTimeAnnotator": None, "IsaacReadWorldPose": None,

@@ -1,4 +1,4 @@
-"""IsaacReadEffortSensor and IsaacReadJointState against statics on a real world."""
+"""Nodes that read joints: IsaacReadEffortSensor, IsaacReadJointState (statics on a real world), IsaacJointNameResolver."""
 import math
 
 import pytest
@@ -48,3 +48,20 @@ def test_read_joint_state_reports_position_effort_and_a_prismatic_dof():
         assert out.jointEfforts[0] == pytest.approx(LOAD_FORCE, rel=0.01)
         assert out.jointDofTypes == (1,)
         assert out.stageMetersPerUnit == 1.0
+
+
+def test_joint_name_resolver_maps_an_override_back_to_the_joint_prims_name():
+    from pxr import Sdf
+
+    stage = slide_stage(STIFFNESS, 1e2)
+    stage.GetPrimAtPath("/World/Robot/Slide").CreateAttribute("isaac:nameOverride", Sdf.ValueTypeNames.String).Set(
+        "lift")
+    with create_world(stage) as world:
+        node = NodeHarness("isaacsim.core.nodes.IsaacJointNameResolver",
+                           {"robotPath": "/World/Robot", "jointNames": ["lift", "gripper"]}, world=world)
+        out = node.compute("execIn").outputs
+        assert out["jointNames"] == ("Slide", "gripper")
+        assert out["robotPath"] == "/World/Robot"
+        with pytest.raises(Exception, match="no articulation root at or under /World/Ground"):
+            NodeHarness("isaacsim.core.nodes.IsaacJointNameResolver", {"robotPath": "/World/Ground"},
+                        world=world).compute("execIn")
