@@ -20,7 +20,7 @@ PRIM_SERVICES = ("serves Isaac's own isaac_ros2_messages service types (prim lis
                  "defined in Isaac's ROS workspace, not among graphflow's service types yet")
 TEST_ONLY = "Isaac's internal test node"
 EDITOR = "sets up a robot in the editor, not at run time"
-EVENTS = "Kit application and message-bus events do not exist in a headless graphflow run"
+CLOSING = "fires while Kit shuts down; a graphflow run ends without a further tick to fire it in"
 PRIM_EDIT = "changes the stage's prims while running, which graphflow's world does not do"
 BUNDLES = "works on Kit attribute bundles, which graphflow does not have"
 
@@ -37,13 +37,13 @@ def _ids(prefix: str, names: dict[str, str | None]) -> dict[str, str | None]:
 LIBRARIES: dict[str, dict[str, str | None]] = {
     "omni.graph.action": _ids("omni.graph.action", {
         "AddPrimRelationship": PRIM_EDIT, "Branch": None, "Countdown": None, "Counter": None, "Delay": None,
-        "ExitApplication": EVENTS, "FlipFlop": None, "ForEach": None, "ForLoop": None, "Gate": None,
-        "Multigate": None, "Multisequence": None, "OnClosing": EVENTS, "OnCustomEvent": EVENTS,
+        "ExitApplication": None, "FlipFlop": None, "ForEach": None, "ForLoop": None, "Gate": None,
+        "Multigate": None, "Multisequence": None, "OnClosing": CLOSING, "OnCustomEvent": None,
         "OnGamepadInput": None, "OnImpulseEvent": None, "OnKeyboardInput": None, "OnLoaded": None,
-        "OnMessageBusEvent": EVENTS, "OnMouseInput": "needs Kit's viewport mouse (no GUI headless)",
+        "OnMessageBusEvent": None, "OnMouseInput": "needs Kit's viewport mouse (no GUI headless)",
         "OnObjectChange": NOT_YET, "OnPlaybackTick": None, "OnStageEvent": None, "OnTick": None,
-        "OnVariableChange": None, "Once": None, "RationalTimeSyncGate": NOT_YET, "SendCustomEvent": EVENTS,
-        "SendMessageBusEvent": EVENTS, "Sequence": None, "SetPrimActive": PRIM_EDIT, "SwitchToken": None,
+        "OnVariableChange": None, "Once": None, "RationalTimeSyncGate": NOT_YET, "SendCustomEvent": None,
+        "SendMessageBusEvent": None, "Sequence": None, "SetPrimActive": PRIM_EDIT, "SwitchToken": None,
         "SyncGate": None}),
     "omni.graph.nodes": _ids("omni.graph.nodes", {
         "Add": None, "ArrayGetSize": None, "ArrayIndex": None, "BooleanAnd": None, "BooleanNot": None,

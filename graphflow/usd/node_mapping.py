@@ -80,7 +80,8 @@ PICK_PLACE_OLD_INPUTS = ("robotModel", "robotPrimPath", "usePath", "targetPrim")
 
 # nodes whose per-field dynamic inputs (message fields; a service's Request:* / Response:*) become messageFields
 GENERIC_PUBLISHERS = ("isaacsim.ros2.bridge.ROS2Publisher", "omni.isaac.ros2_bridge.ROS2Publisher",
-                      "isaacsim.ros2.bridge.OgnROS2ServiceClient", "isaacsim.ros2.bridge.OgnROS2ServiceServerResponse")
+                      "isaacsim.ros2.bridge.OgnROS2ServiceClient", "isaacsim.ros2.bridge.OgnROS2ServiceServerResponse",
+                      "omni.graph.action.SendMessageBusEvent")
 GENERIC_SUBSCRIBERS = ("isaacsim.ros2.bridge.ROS2Subscriber", "omni.isaac.ros2_bridge.ROS2Subscriber")
 MESSAGE_FIELDS = "messageFields"
 

@@ -49,6 +49,7 @@ STAGE_INPUTS = {
     "isaacsim.core.nodes.IsaacArticulationState": {"targetPrim": UR10, "jointNames": ["elbow_joint"]},
     "isaacsim.sensors.physics.IsaacReadEffortSensor": {"prim": UR10 + "/wrist_2_link/wrist_3_joint"},
     "isaacsim.sensors.physics.IsaacReadJointState": {"prim": UR10},
+    "isaacsim.robot.wheeled_robots.QuinticPathPlanner": {"targetPrim": CUBE},
     "isaacsim.core.nodes.IsaacJointNameResolver": {"robotPath": UR10, "jointNames": ["elbow_joint"]},
 }
 
