@@ -37,12 +37,12 @@ def _ids(prefix: str, names: dict[str, str | None]) -> dict[str, str | None]:
 LIBRARIES: dict[str, dict[str, str | None]] = {
     "omni.graph.action": _ids("omni.graph.action", {
         "AddPrimRelationship": PRIM_EDIT, "Branch": None, "Countdown": None, "Counter": None, "Delay": None,
-        "ExitApplication": None, "FlipFlop": None, "ForEach": None, "ForLoop": None, "Gate": None,
-        "Multigate": None, "Multisequence": None, "OnClosing": CLOSING, "OnCustomEvent": None,
+        "ExitApplication": None, "FlipFlop": None, "ForEach": None, "ForEachTarget": None, "ForLoop": None,
+        "Gate": None, "Multigate": None, "Multisequence": None, "OnClosing": CLOSING, "OnCustomEvent": None,
         "OnGamepadInput": None, "OnImpulseEvent": None, "OnKeyboardInput": None, "OnLoaded": None,
         "OnMessageBusEvent": None, "OnMouseInput": "needs Kit's viewport mouse (no GUI headless)",
         "OnObjectChange": NOT_YET, "OnPlaybackTick": None, "OnStageEvent": None, "OnTick": None,
-        "OnVariableChange": None, "Once": None, "RationalTimeSyncGate": NOT_YET, "SendCustomEvent": None,
+        "OnVariableChange": None, "Once": None, "RationalTimeSyncGate": None, "SendCustomEvent": None,
         "SendMessageBusEvent": None, "Sequence": None, "SetPrimActive": PRIM_EDIT, "SwitchToken": None,
         "SyncGate": None}),
     "omni.graph.nodes": _ids("omni.graph.nodes", {

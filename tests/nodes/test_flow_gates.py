@@ -61,3 +61,30 @@ def test_sync_gate_counts_per_sync_value_not_per_tick():
     harness.run(4)
     assert harness.output("passed", "count") == 4
     assert harness.output("gate", "syncValue") == 5
+
+
+def test_rational_sync_gate_treats_reduced_equal_times_as_one():
+    """Both arrivals of a tick: left at 1/2, right at 3/6 (the same time): the gate passes; then right at
+    2/0 after left at 1/0, which do not reduce to one another: it does not."""
+    graph = _sync_graph("left.outputs:count")
+    graph["nodes"][4] = {"name": "gate", "type": "omni.graph.action.RationalTimeSyncGate"}
+    graph["connections"] = [c for c in graph["connections"] if c["dst"] != "gate.inputs:syncValue"]
+    harness = GraphHarness(graph)
+    gate = harness.instance.database("gate")
+    for numerator, denominator, fires in ((1, 2, False), (3, 6, True), (1, 0, False), (2, 0, False)):
+        gate.inputs.rationalTimeNumerator, gate.inputs.rationalTimeDenominator = numerator, denominator
+        harness.instance.compute_node("gate", ("execIn",))
+        assert (gate.outputs.execOut != 0) == fires, (numerator, denominator)
+        gate.outputs.execOut = 0
+
+
+def test_for_each_target_visits_each_prim_then_finishes():
+    harness = GraphHarness(_graph(
+        {"name": "start", "type": "omni.graph.action.OnLoaded"},
+        {"name": "loop", "type": "omni.graph.action.ForEachTarget", "inputs": {"targets": ["/World/a", "/World/b"]}},
+        _counter("body"), _counter("done"),
+        connections=[("start.outputs:execOut", "loop.inputs:execIn"), ("loop.outputs:loopBody", "body.inputs:execIn"),
+                     ("loop.outputs:finished", "done.inputs:execIn")]))
+    harness.run(1)
+    assert (harness.output("body", "count"), harness.output("done", "count")) == (2, 1)
+    assert harness.output("loop", "target") == ("/World/b",) and harness.output("loop", "arrayIndex") == 1
