@@ -55,7 +55,7 @@ STAGE_INPUTS = {
 
 TYPES = default_registry().types()
 # constants holding paths and path conversions pass them on without reading the scene
-PATHS_ONLY = ("omni.graph.nodes.GetPrimPaths",)
+PATHS_ONLY = ("omni.graph.nodes.GetPrimPaths", "omni.graph.action.ForEachTarget")
 STAGE_TYPES = [t for t in TYPES if any(a.type in ("target", "path") for a in t.spec.inputs)
                and "constants" not in t.spec.categories and t.spec.id not in PATHS_ONLY]
 
