@@ -1,0 +1,84 @@
+"""omni.graph.nodes trigonometry, rounding, vector and 4x4 transform nodes against math and USD's Gf."""
+import math
+
+import pytest
+from pxr import Gf
+
+from graphflow.executor import GraphRuntimeError
+from graphflow.poses import quat_from_axis_angle
+from graphflow.testing import NodeHarness
+from graphflow.testing.fake_world import FakeWorld
+
+
+def _out(type_name, output, **inputs):
+    return NodeHarness(f"omni.graph.nodes.{type_name}", inputs).compute().outputs[output]
+
+
+@pytest.mark.parametrize("degrees", [-270.0, -30.0, 0.0, 45.0, 123.4])
+def test_trigonometry_takes_degrees_as_kit(degrees):
+    assert _out("Sin", "value", value=degrees) == pytest.approx(math.sin(math.radians(degrees)))
+    assert _out("Cos", "value", value=degrees) == pytest.approx(math.cos(math.radians(degrees)))
+    assert _out("Tan", "value", value=degrees) == pytest.approx(math.tan(math.radians(degrees)))
+    assert _out("Atan", "value", value=math.tan(math.radians(30.0))) == pytest.approx(30.0)
+
+
+def test_inverse_trigonometry_and_atan2_answer_in_degrees():
+    assert _out("Asin", "value", value=0.5) == pytest.approx(30.0)
+    assert _out("Acos", "value", value=[0.5, -1.0]) == pytest.approx((60.0, 180.0))
+    assert _out("ATan2", "result", a=1.0, b=-1.0) == pytest.approx(135.0)
+    with pytest.raises(GraphRuntimeError, match="inputs:value: math domain error"):
+        NodeHarness("omni.graph.nodes.Asin", {"value": 2.0}).compute()
+
+
+def test_floor_ceil_and_negate_elementwise():
+    assert _out("Floor", "result", a=[-1.5, 2.5]) == (-2, 2)
+    assert _out("Ceil", "result", a=[-1.5, 2.5]) == (-1, 3)
+    assert _out("Negate", "output", input=[1.0, -2.0, 0.5]) == (-1.0, 2.0, -0.5)
+
+
+def test_vector_nodes():
+    assert _out("Normalize", "result", vector=[3.0, 4.0, 0.0]) == pytest.approx((0.6, 0.8, 0.0))
+    assert _out("Normalize", "result", vector=[0.0, 0.0, 0.0]) == (0.0, 0.0, 0.0)
+    assert _out("CrossProduct", "product", a=[1.0, 0.0, 0.0], b=[0.0, 1.0, 0.0]) == (0.0, 0.0, 1.0)
+    assert _out("CrossProduct", "product", a=[[0.0, 1.0, 0.0]], b=[[0.0, 0.0, 1.0]]) == ((1.0, 0.0, 0.0),)
+    assert _out("Distance3D", "distance", a=[1.0, 2.0, 2.0], b=[0.0, 0.0, 0.0]) == pytest.approx(3.0)
+    assert _out("Distance3D", "distance", a=[[3.0, 4.0, 0.0], [0.0, 0.0, 2.0]], b=[0.0, 0.0, 0.0]) == (5.0, 2.0)
+
+
+def _gf_matrix(axis, degrees, translation):
+    return Gf.Matrix4d(Gf.Rotation(Gf.Vec3d(*axis), degrees), Gf.Vec3d(*translation))
+
+
+def _flat(matrix):
+    return tuple(matrix[i][j] for i in range(4) for j in range(4))
+
+
+def _same_rotation(q, gf_quat):
+    expected = (*gf_quat.GetImaginary(), gf_quat.GetReal())
+    sign = 1.0 if sum(a * b for a, b in zip(q, expected)) >= 0 else -1.0
+    return tuple(sign * c for c in q) == pytest.approx(expected, abs=1e-12)
+
+
+@pytest.mark.parametrize("axis, degrees", [((0, 0, 1), 30.0), ((1, 2, 3), 140.0), ((1, 0, 0), 179.0)])
+def test_matrix_rotation_and_translation_match_usd_gf(axis, degrees):
+    matrix = _gf_matrix(axis, degrees, (0.5, -1.0, 2.0))
+    assert _same_rotation(_out("GetMatrix4Quaternion", "quaternion", matrix=_flat(matrix)),
+                          matrix.ExtractRotationQuat())
+    assert _out("GetMatrix4Translation", "translation", matrix=_flat(matrix)) == (0.5, -1.0, 2.0)
+
+
+def test_prim_world_and_local_transforms_match_usd_gf():
+    """A box turned 30 deg about z at (1, 2, 3) carries a frame 0.5 m along its x: world and local matrices
+    are what Gf composes (local * parent = world)."""
+    world = FakeWorld()
+    turn = quat_from_axis_angle((0.0, 0.0, 1.0), math.radians(30.0))
+    world.add_box("/World/Box", (1.0, 2.0, 3.0), (0.1, 0.1, 0.1), orientation=turn)
+    world.add_frame("/World/Box/Tip", "/World/Box", ((0.5, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)))
+    box = _gf_matrix((0, 0, 1), 30.0, (1.0, 2.0, 3.0))
+    local = Gf.Matrix4d(Gf.Rotation(Gf.Vec3d(0, 0, 1), 0.0), Gf.Vec3d(0.5, 0.0, 0.0))
+    read_world = NodeHarness("omni.graph.nodes.GetPrimLocalToWorldTransform", {"primPath": "/World/Box/Tip"},
+                             world=world).compute().outputs["localToWorldTransform"]
+    assert read_world == pytest.approx(_flat(local * box), abs=1e-12)
+    read_local = NodeHarness("omni.graph.nodes.ReadPrimLocalTransform", {"prim": "/World/Box/Tip"},
+                             world=world).compute().outputs["value"]
+    assert read_local == pytest.approx(_flat(local), abs=1e-12)
