@@ -26,6 +26,7 @@ _SCALARS = ("bool", "uchar", "int", "int64", "uint", "uint64", "float", "double"
 # from Isaac's updateNodeVersion code (isaacsim.ros2.nodes, isaacsim.sensors.physx)
 PORT_CHANGES: dict[tuple[str, int], dict[str, str | None]] = {
     ("isaacsim.ros2.bridge.ROS2SubscribeJointState", 1): {"inputs:targetPrim": None},
+    ("omni.graph.nodes.Timer", 1): {"outputs:alpha": "outputs:value"},     # Kit's node library, Timer v1 and v2
 }
 
 

@@ -48,6 +48,7 @@ _RENDERING = {
             "ROS2PublishBbox3D": RENDERED_IMAGE, "ROS2PublishSemanticLabels": RENDERED_IMAGE,
             "ROS2PublishObjectIdMap": RENDERED_IMAGE, "ROS2PublishPointCloud": RTX_SENSOR,
             "ROS2PublishLaserScan": RTX_SENSOR},
+    ("omni.graph.nodes",): {"GpuInteropRenderProductEntry": RENDER_PRODUCT},
     _RTX: {"IsaacExtractRTXSensorPointCloud": RTX_SENSOR, "IsaacComputeRTXLidarFlatScan": RTX_SENSOR,
            "IsaacCreateRTXLidarScanBuffer": RTX_SENSOR, "IsaacReadRTXLidarData": RTX_SENSOR},
 }

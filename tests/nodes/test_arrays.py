@@ -80,3 +80,17 @@ def test_construct_then_index_in_a_graph():
     })
     g.run(ticks=1)
     assert g.logs == ["b"]
+
+
+def test_array_remove_index_fill_and_resize():
+    from graphflow.testing import NodeHarness
+
+    def out(type_name, **inputs):
+        return NodeHarness(f"omni.graph.nodes.{type_name}", inputs).compute().outputs["array"]
+
+    assert out("ArrayRemoveIndex", array=[1, 2, 3], index=-1) == (1, 2)
+    assert out("ArrayRemoveIndex", array=[1, 2, 3], index=0) == (2, 3)
+    assert out("ArrayFill", array=[1.0, 2.0, 3.0], fillValue=7.5) == (7.5, 7.5, 7.5)
+    assert out("ArrayResize", array=[1, 2, 3], newSize=2) == (1, 2)
+    assert out("ArrayResize", array=[[1.0, 2.0]], newSize=3) == ((1.0, 2.0), (0.0, 0.0), (0.0, 0.0))
+    assert out("ArrayResize", array=[1, 2], newSize=-4) == ()

@@ -29,3 +29,13 @@ def test_arrays_elementwise_and_single_bool_broadcast():
 def test_non_bool_is_an_error():
     with pytest.raises(GraphRuntimeError, match="inputs:a must hold bools"):
         NodeHarness("omni.graph.nodes.BooleanAnd", inputs={"a": 0.5, "b": True}).compute()
+
+
+@pytest.mark.parametrize("name, truth", [("AND", (0, 0, 0, 1)), ("OR", (0, 1, 1, 1)), ("XOR", (0, 1, 1, 0)),
+                                         ("NAND", (1, 1, 1, 0)), ("NOR", (1, 0, 0, 0)), ("XNOR", (1, 0, 0, 1))])
+def test_boolean_expression_truth_tables(name, truth):
+    cases = [(False, False), (False, True), (True, False), (True, True)]
+    got = tuple(int(NodeHarness("omni.graph.nodes.BooleanExpr", {"a": a, "b": b, "operator": name})
+                    .compute().outputs["result"]) for a, b in cases)
+    assert got == truth
+

@@ -50,12 +50,14 @@ STAGE_INPUTS = {
     "isaacsim.sensors.physics.IsaacReadEffortSensor": {"prim": UR10 + "/wrist_2_link/wrist_3_joint"},
     "isaacsim.sensors.physics.IsaacReadJointState": {"prim": UR10},
     "isaacsim.robot.wheeled_robots.QuinticPathPlanner": {"targetPrim": CUBE},
+    "omni.graph.nodes.GetPrimLocalToWorldTransform": {"prim": CUBE, "usePath": False},
+    "omni.graph.nodes.ReadPrimLocalTransform": {"prim": CUBE},
     "isaacsim.core.nodes.IsaacJointNameResolver": {"robotPath": UR10, "jointNames": ["elbow_joint"]},
 }
 
 TYPES = default_registry().types()
 # constants holding paths and path conversions pass them on without reading the scene
-PATHS_ONLY = ("omni.graph.nodes.GetPrimPaths", "omni.graph.action.ForEachTarget")
+PATHS_ONLY = ("omni.graph.nodes.GetPrimPaths", "omni.graph.action.ForEachTarget", "omni.graph.nodes.GetTargetsSize")
 STAGE_TYPES = [t for t in TYPES if any(a.type in ("target", "path") for a in t.spec.inputs)
                and "constants" not in t.spec.categories and t.spec.id not in PATHS_ONLY]
 
