@@ -23,7 +23,7 @@ EDITOR = "sets up a robot in the editor, not at run time"
 CLOSING = "fires while Kit shuts down; a graphflow run ends without a further tick to fire it in"
 PRIM_EDIT = "changes the stage's prims while running, which graphflow's world does not do"
 BUNDLES = "works on Kit attribute bundles, which graphflow does not have"
-GRAPH_TARGETS = "reads the prim an instanced graph runs for; graphflow runs each graph once, not per instance"
+GRAPH_TARGETS = "a numeric id of the graph target (Kit's internal prim handle); GraphTarget gives its path"
 
 _ISAAC_CORE = "isaacsim.core.nodes"
 _ROS2 = "isaacsim.ros2.bridge"
@@ -58,9 +58,11 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ConstantQuatf": None, "ConstantString": None, "ConstantToken": None, "ConstantUInt": None,
         "ConstantUInt64": None, "ConstantVector3d": None, "ConstantVector3f": None, "ConstructArray": None,
         "Cos": None, "CrossProduct": None, "Distance3D": None, "Divide": None, "FindPrims": None, "Floor": None,
-        "GetGraphTargetId": GRAPH_TARGETS, "GetMatrix4Quaternion": None, "GetMatrix4Rotation": NOT_YET,
+        "GetGraphTargetId": GRAPH_TARGETS, "GetGraphTargetPrim": None, "GetMatrix4Quaternion": None,
+        "GetMatrix4Rotation": NOT_YET,
         "GetMatrix4RotationMatrix": NOT_YET, "GetMatrix4Translation": None, "GetPrimLocalToWorldTransform": None,
         "GetPrimPaths": None, "GetPrimsAtPath": None, "GetTargetsSize": None, "GpuInteropRenderProductEntry": None,
+        "GraphTarget": None,
         "Increment": None, "MakeArray": "Kit's older Python array maker, replaced by ConstructArray; not carried over",
         "MakeVector3": None, "MakeVector4": None, "Maximum": None, "Minimum": None, "Modulo": None,
         "Multiply": None, "Negate": None, "Normalize": None, "ReadGamepadState": None, "ReadKeyboardState": None,
