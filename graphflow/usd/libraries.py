@@ -111,7 +111,8 @@ LIBRARY_NOTES = {
     "omni.graph.nodes": (
         "The types whose id and ports Kit's node library reference pages confirmed, not yet the whole "
         "extension (about 250 types: colour, half, texture-coordinate and matrix constants, bundles, strings, "
-        "curves, random numbers, variants...): a graph using one of the others is refused on import with a line naming it (--skip-unknown drops the node)."),
+        "curves, random numbers, variants...): a graph using one of the others is refused on import with a "
+        "line naming it (--skip-unknown drops the node)."),
 }
 IMPLEMENTED, DROPPED, MISSING = "implemented", "dropped on import", "not implemented"
 
