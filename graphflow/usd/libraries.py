@@ -67,8 +67,8 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "MakeVector3": None, "MakeVector4": None, "Maximum": None, "Minimum": None, "Modulo": None,
         "Multiply": None, "Negate": None, "Normalize": None, "ReadGamepadState": None, "ReadKeyboardState": None,
         "ReadPrim": BUNDLES, "ReadPrimAttribute": None, "ReadPrimLocalTransform": None, "RotateVector": None,
-        "SetMatrix4Quaternion": NOT_YET, "Sin": None, "Subtract": None, "Tan": None, "Timer": None,
-        "ToDouble": None, "ToString": None, "ToTarget": NOT_YET, "ToToken": None, "Trig": NOT_YET,
+        "SetMatrix4Quaternion": None, "Sin": None, "Subtract": None, "Tan": None, "Timer": None,
+        "ToDouble": None, "ToString": None, "ToTarget": NOT_YET, "ToToken": None, "Trig": None,
         "WritePrim": BUNDLES, "WritePrimAttribute": None, "WritePrimLocalTransform": PRIM_EDIT}),
     "isaacsim.core.nodes": _ids(_ISAAC_CORE, {
         "IsaacArticulationController": None, "IsaacArticulationState": None,

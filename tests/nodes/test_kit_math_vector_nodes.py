@@ -82,3 +82,15 @@ def test_prim_world_and_local_transforms_match_usd_gf():
     read_local = NodeHarness("omni.graph.nodes.ReadPrimLocalTransform", {"prim": "/World/Box/Tip"},
                              world=world).compute().outputs["value"]
     assert read_local == pytest.approx(_flat(local), abs=1e-12)
+
+
+def test_the_older_trig_node_and_set_rotation_quaternion():
+    assert _out("Trig", "result", a=30.0, operation="SIN") == pytest.approx(0.5)
+    assert _out("Trig", "result", a=0.5, operation="ARCCOS") == pytest.approx(60.0)
+    assert _out("Trig", "result", a=math.pi, operation="DEGREES") == pytest.approx(180.0)
+    start = _gf_matrix((1, 0, 0), 10.0, (0.5, -1.0, 2.0))
+    turn = Gf.Rotation(Gf.Vec3d(0, 1, 2), 70.0).GetQuat()
+    quaternion = (*turn.GetImaginary(), turn.GetReal())
+    expected = Gf.Matrix4d(Gf.Rotation(Gf.Vec3d(0, 1, 2), 70.0), Gf.Vec3d(0.5, -1.0, 2.0))
+    assert _out("SetMatrix4Quaternion", "matrix", matrix=_flat(start), quaternion=quaternion) == pytest.approx(
+        _flat(expected), abs=1e-12)
