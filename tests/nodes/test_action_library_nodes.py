@@ -106,3 +106,23 @@ def test_exit_application_ends_the_run_after_its_tick():
                      ("branch.outputs:execTrue", "exit.inputs:execIn")]))
     harness.run(10)
     assert harness.output("ticks", "count") == 3
+
+
+def test_on_object_change_fires_the_tick_after_a_property_changes():
+    from graphflow.testing.fake_world import FakeWorld
+
+    world = FakeWorld()
+    world.add_box("/World/Cube", (0.0, 0.0, 0.5), (0.1, 0.1, 0.1))
+    world.attributes[("/World/Cube", "physics:mass")] = 1.0
+    harness = GraphHarness(_graph(
+        {"name": "watch", "type": "omni.graph.action.OnObjectChange",
+         "inputs": {"path": "/World/Cube.physics:mass"}},
+        {"name": "changes", "type": "omni.graph.action.Counter"},
+        connections=[("watch.outputs:changed", "changes.inputs:execIn")]), world=world)
+    counts = []
+    for mass in (1.0, 1.0, 2.0, 2.0, 3.0):
+        world.attributes[("/World/Cube", "physics:mass")] = mass
+        harness.run(1)
+        counts.append(harness.output("changes", "count"))
+    assert counts == [0, 0, 1, 1, 2]
+    assert harness.output("watch", "propertyName") == "physics:mass"

@@ -94,3 +94,16 @@ def test_array_remove_index_fill_and_resize():
     assert out("ArrayResize", array=[1, 2, 3], newSize=2) == (1, 2)
     assert out("ArrayResize", array=[[1.0, 2.0]], newSize=3) == ((1.0, 2.0), (0.0, 0.0), (0.0, 0.0))
     assert out("ArrayResize", array=[1, 2], newSize=-4) == ()
+
+
+def test_array_set_index_and_to_target():
+    from graphflow.testing import NodeHarness
+
+    def out(type_name, output, **inputs):
+        return NodeHarness(f"omni.graph.nodes.{type_name}", inputs).compute().outputs[output]
+
+    assert out("ArraySetIndex", "array", array=[1, 2, 3], index=-1, value=9) == (1, 2, 9)
+    assert out("ArraySetIndex", "array", array=[1.0], index=2, value=5.0, resizeToFit=True) == (1.0, 0.0, 5.0)
+    assert out("ToTarget", "converted", value="/World/Cube") == ("/World/Cube",)
+    assert out("ToTarget", "converted", value=["/World/a", "/World/b"]) == ("/World/a", "/World/b")
+    assert out("ToTarget", "converted", value="") == ()
