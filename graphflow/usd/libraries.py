@@ -102,7 +102,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "StanleyControlPID": None}),
     "isaacsim.sensors.physics": _ids(_SENSORS, {
         "IsaacReadContactSensor": None, "IsaacReadEffortSensor": None, "IsaacReadIMU": None,
-        "IsaacReadJointState": None, "IsaacReadRaycastSensor": NOT_YET}),
+        "IsaacReadJointState": None, "IsaacReadRaycastSensor": None}),
     "isaacsim.robot.surface_gripper": {"isaacsim.robot.surface_gripper.SurfaceGripper": None},
     "isaacsim.asset.gen.conveyor": {"isaacsim.asset.gen.conveyor.IsaacConveyor": None},
 }
