@@ -21,6 +21,8 @@ PRIM_SERVICES = ("serves Isaac's own isaac_ros2_messages service types (prim lis
 TEST_ONLY = "Isaac's internal test node"
 EDITOR = "sets up a robot in the editor, not at run time"
 CLOSING = "fires while Kit shuts down; a graphflow run ends without a further tick to fire it in"
+TF_DRIVEN = ("places prims at the poses /tf carries by switching off their articulations, joints and rigid "
+             "bodies, which graphflow's world cannot do while running")
 PRIM_EDIT = "changes the stage's prims while running, which graphflow's world does not do"
 BUNDLES = "works on Kit attribute bundles, which graphflow does not have"
 GRAPH_TARGETS = "a numeric id of the graph target (Kit's internal prim handle); GraphTarget gives its path"
@@ -85,7 +87,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
     "isaacsim.ros2.bridge / isaacsim.ros2.nodes": _ids(_ROS2, {
         "OgnROS2ServiceClient": None, "OgnROS2ServiceServerRequest": None,
         "OgnROS2ServiceServerResponse": None, "ROS2CameraHelper": None, "ROS2CameraInfoHelper": None,
-        "ROS2Context": None, "ROS2PublishAckermannDrive": "ackermann_msgs is not among the standard message types",
+        "ROS2Context": None, "ROS2PublishAckermannDrive": None,
         "ROS2PublishBbox2D": None, "ROS2PublishBbox3D": None, "ROS2PublishCameraInfo": None,
         "ROS2PublishClock": None, "ROS2PublishCompressedImage": None, "ROS2PublishImage": None,
         "ROS2PublishImu": None, "ROS2PublishJointState": None, "ROS2PublishLaserScan": None,
@@ -93,8 +95,8 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ROS2PublishRawTransformTree": None, "ROS2PublishSemanticLabels": None, "ROS2PublishTransformTree": None,
         "ROS2Publisher": None, "ROS2QoSProfile": None, "ROS2RtxLidarHelper": None,
         "ROS2RtxLidarPointCloudConfig": None, "ROS2RtxRadarHelper": None, "ROS2ServicePrim": PRIM_SERVICES,
-        "ROS2SubscribeAckermannDrive": "ackermann_msgs is not among the standard message types",
-        "ROS2SubscribeClock": None, "ROS2SubscribeJointState": None, "ROS2SubscribeTransformTree": NOT_YET,
+        "ROS2SubscribeAckermannDrive": None,
+        "ROS2SubscribeClock": None, "ROS2SubscribeJointState": None, "ROS2SubscribeTransformTree": TF_DRIVEN,
         "ROS2SubscribeTwist": None, "ROS2Subscriber": None}),
     "isaacsim.robot.wheeled_robots": _ids(_WHEELED, {
         "AckermannController": None, "CheckGoal2D": None, "DifferentialController": None, "HolonomicController": None,
