@@ -14,13 +14,13 @@ from dataclasses import dataclass
 
 from graphflow.usd.node_mapping import RENDERING_NODES
 
-NOT_YET = "not carried over yet"
 HOST = "reads the host machine (environment, files, wall clock): not reproducible, so not carried over"
 PRIM_SERVICES = ("serves Isaac's own isaac_ros2_messages service types (prim list, attribute read/write), "
                  "defined in Isaac's ROS workspace, not among graphflow's service types yet")
 TEST_ONLY = "Isaac's internal test node"
 EDITOR = "sets up a robot in the editor, not at run time"
 CLOSING = "fires while Kit shuts down; a graphflow run ends without a further tick to fire it in"
+EULER = "takes or gives Euler angles whose units and axis order Kit's reference pages do not state"
 TF_DRIVEN = ("places prims at the poses /tf carries by switching off their articulations, joints and rigid "
              "bodies, which graphflow's world cannot do while running")
 PRIM_EDIT = "changes the stage's prims while running, which graphflow's world does not do"
@@ -61,8 +61,8 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ConstantUInt64": None, "ConstantVector3d": None, "ConstantVector3f": None, "ConstructArray": None,
         "Cos": None, "CrossProduct": None, "Distance3D": None, "Divide": None, "FindPrims": None, "Floor": None,
         "GetGraphTargetId": GRAPH_TARGETS, "GetGraphTargetPrim": None, "GetMatrix4Quaternion": None,
-        "GetMatrix4Rotation": NOT_YET,
-        "GetMatrix4RotationMatrix": NOT_YET, "GetMatrix4Translation": None, "GetPrimLocalToWorldTransform": None,
+        "GetMatrix4Rotation": EULER,
+        "GetMatrix4RotationMatrix": EULER, "GetMatrix4Translation": None, "GetPrimLocalToWorldTransform": None,
         "GetPrimPaths": None, "GetPrimsAtPath": None, "GetTargetsSize": None, "GpuInteropRenderProductEntry": None,
         "GraphTarget": None,
         "Increment": None, "MakeArray": "Kit's older Python array maker, replaced by ConstructArray; not carried over",
@@ -71,7 +71,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ReadPrim": BUNDLES, "ReadPrimAttribute": None, "ReadPrimLocalTransform": None, "RotateVector": None,
         "SetMatrix4Quaternion": None, "Sin": None, "Subtract": None, "Tan": None, "Timer": None,
         "ToDouble": None, "ToString": None, "ToTarget": None, "ToToken": None, "Trig": None,
-        "WritePrim": BUNDLES, "WritePrimAttribute": None, "WritePrimLocalTransform": PRIM_EDIT}),
+        "WritePrim": BUNDLES, "WritePrimAttribute": None, "WritePrimLocalTransform": None}),
     "isaacsim.core.nodes": _ids(_ISAAC_CORE, {
         "IsaacArticulationController": None, "IsaacArticulationState": None,
         "IsaacAttachHydraTexture": None, "IsaacComputeOdometry": None, "IsaacComputeTransformTree": None,

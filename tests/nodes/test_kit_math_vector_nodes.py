@@ -94,3 +94,19 @@ def test_the_older_trig_node_and_set_rotation_quaternion():
     expected = Gf.Matrix4d(Gf.Rotation(Gf.Vec3d(0, 1, 2), 70.0), Gf.Vec3d(0.5, -1.0, 2.0))
     assert _out("SetMatrix4Quaternion", "matrix", matrix=_flat(start), quaternion=quaternion) == pytest.approx(
         _flat(expected), abs=1e-12)
+
+
+def test_write_prim_local_transform_places_a_free_body_where_read_prim_local_transform_reads_it():
+    """On a real world: a free cube written to a Gf transform reads back that transform."""
+    from graphflow.physics import create_world
+
+    matrix = _gf_matrix((0, 0, 1), 25.0, (0.3, -0.2, 0.5))
+    with create_world("asset:ur10_pick_place.usda") as world:
+        NodeHarness("omni.graph.nodes.WritePrimLocalTransform",
+                    {"prim": "/World/Cube", "value": _flat(matrix)}, world=world).compute("execIn")
+        read = NodeHarness("omni.graph.nodes.ReadPrimLocalTransform", {"prim": "/World/Cube"},
+                           world=world).compute().outputs["value"]
+    assert read == pytest.approx(_flat(matrix), abs=1e-6)
+    with pytest.raises(GraphRuntimeError, match="scale or shear"):
+        NodeHarness("omni.graph.nodes.WritePrimLocalTransform",
+                    {"prim": "/World/Cube", "value": _flat(Gf.Matrix4d(2.0))}).compute("execIn")
