@@ -39,3 +39,21 @@ def test_boolean_expression_truth_tables(name, truth):
                     .compute().outputs["result"]) for a, b in cases)
     assert got == truth
 
+
+
+@pytest.mark.parametrize("type_id, truth", [("BooleanXor", (0, 1, 1, 0)), ("BooleanNand", (1, 1, 1, 0)),
+                                            ("BooleanNor", (1, 0, 0, 0))])
+def test_xor_nand_nor_truth_tables_and_arrays(type_id, truth):
+    cases = [(False, False), (False, True), (True, False), (True, True)]
+    node = f"omni.graph.nodes.{type_id}"
+    assert tuple(int(NodeHarness(node, {"a": a, "b": b}).compute().outputs["result"]) for a, b in cases) == truth
+    pairwise = NodeHarness(node, {"a": [a for a, _ in cases], "b": [b for _, b in cases]}).compute()
+    assert tuple(int(r) for r in pairwise.outputs["result"]) == truth
+
+
+def test_select_if_picks_whole_values_or_element_by_element():
+    assert NodeHarness("omni.graph.nodes.SelectIf", {"condition": True, "ifTrue": 1.5, "ifFalse": -1.0}
+                       ).compute().outputs["result"] == 1.5
+    picked = NodeHarness("omni.graph.nodes.SelectIf", {"condition": [True, False, True], "ifTrue": [1, 2, 3],
+                                                       "ifFalse": 0}).compute().outputs["result"]
+    assert picked == (1, 0, 3)
