@@ -1,5 +1,6 @@
 """omni.graph.nodes trigonometry, rounding, vector and 4x4 transform nodes against math and USD's Gf."""
 import math
+import struct
 
 import pytest
 from pxr import Gf
@@ -110,3 +111,15 @@ def test_write_prim_local_transform_places_a_free_body_where_read_prim_local_tra
     with pytest.raises(GraphRuntimeError, match="scale or shear"):
         NodeHarness("omni.graph.nodes.WritePrimLocalTransform",
                     {"prim": "/World/Cube", "value": _flat(Gf.Matrix4d(2.0))}).compute("execIn")
+
+
+def test_magnitude_absolute_dot_product_and_conversions():
+    assert _out("Magnitude", "magnitude", input=[3.0, 4.0]) == pytest.approx(5.0)
+    assert _out("Magnitude", "magnitude", input=-2.5) == 2.5
+    assert _out("Magnitude", "magnitude", input=[[1.0, 2.0, 2.0], [0.0, 0.0, -3.0]]) == pytest.approx((3.0, 3.0))
+    assert _out("Absolute", "absolute", input=[-1.5, 2.0, -0.0]) == (1.5, 2.0, 0.0)
+    assert _out("DotProduct", "product", a=[1.0, 2.0, 3.0], b=[4.0, -5.0, 6.0]) == pytest.approx(12.0)
+    assert _out("DotProduct", "product", a=[[1.0, 0.0]], b=[[0.5, 9.0]]) == (0.5,)
+    assert _out("ToFloat", "converted", value=0.1) == struct.unpack("f", struct.pack("f", 0.1))[0]
+    assert _out("ToHalf", "converted", value=[1.0 / 3.0, True]) == (0.333251953125, 1.0)
+    assert _out("ConstantPi", "value", factor=0.5) == pytest.approx(math.pi / 2)
