@@ -107,3 +107,20 @@ def test_array_set_index_and_to_target():
     assert out("ToTarget", "converted", value="/World/Cube") == ("/World/Cube",)
     assert out("ToTarget", "converted", value=["/World/a", "/World/b"]) == ("/World/a", "/World/b")
     assert out("ToTarget", "converted", value="") == ()
+
+
+def test_array_reverse_rotate_remove_and_insert_values():
+    from graphflow.testing import NodeHarness
+
+    def out(type_name, output="array", **inputs):
+        return NodeHarness(f"omni.graph.nodes.{type_name}", inputs).compute().outputs[output]
+
+    assert out("ArrayReverse", array=[1, 2, 3]) == (3, 2, 1)
+    assert out("ArrayRotate", array=[1, 2, 3, 4], steps=1) == (4, 1, 2, 3)
+    assert out("ArrayRotate", array=[1, 2, 3, 4], steps=-1) == (2, 3, 4, 1)
+    assert out("ArrayRemoveValue", array=[1, 2, 1, 3], value=1) == (2, 1, 3)
+    assert out("ArrayRemoveValue", array=[1, 2, 1, 3], value=1, removeAll=True) == (2, 3)
+    assert out("ArrayRemoveValue", "found", array=[1, 2], value=5) is False
+    assert out("ArrayInsertValue", array=[1, 2, 3], index=1, value=9) == (1, 9, 2, 3)
+    assert out("ArrayInsertValue", array=[1, 2], index=-1, value=0) == (0, 1, 2)
+    assert out("ArrayInsertValue", array=[1, 2], index=7, value=3) == (1, 2, 3)

@@ -123,3 +123,15 @@ def test_magnitude_absolute_dot_product_and_conversions():
     assert _out("ToFloat", "converted", value=0.1) == struct.unpack("f", struct.pack("f", 0.1))[0]
     assert _out("ToHalf", "converted", value=[1.0 / 3.0, True]) == (0.333251953125, 1.0)
     assert _out("ConstantPi", "value", factor=0.5) == pytest.approx(math.pi / 2)
+
+
+def test_round_is_zero_and_read_time():
+    assert _out("Round", "output", input=[1.2345, -2.5, 1234.5], decimals=2) == (1.23, -2.5, 1234.5)
+    assert _out("Round", "output", input=1234.5, decimals=-2) == 1200.0
+    assert _out("IsZero", "result", value=[0.001, -0.002], tolerance=0.01) is True
+    assert _out("IsZero", "result", value=[[0.0, 0.0], [0.0, 0.5]], tolerance=0.1) is False
+    clock = NodeHarness("omni.graph.nodes.ReadTime", time_step=0.25)
+    for _ in range(3):
+        clock.world.step()
+    out = clock.compute().outputs
+    assert (out["time"], out["deltaSeconds"], out["isPlaying"]) == (0.75, 0.25, True)
