@@ -62,7 +62,8 @@ OWN_PRIM = {"isaacsim.sensors.physics.IsaacReadRaycastSensor": ({"raycastSensorP
 
 TYPES = default_registry().types()
 # constants holding paths and path conversions pass them on without reading the scene
-PATHS_ONLY = ("omni.graph.nodes.GetPrimPaths", "omni.graph.action.ForEachTarget", "omni.graph.nodes.GetTargetsSize")
+PATHS_ONLY = ("omni.graph.nodes.GetPrimPaths", "omni.graph.action.ForEachTarget", "omni.graph.nodes.GetTargetsSize",
+              "omni.graph.nodes.GetParentPrims", "omni.graph.nodes.GetPrimPath")
 STAGE_TYPES = [t for t in TYPES if any(a.type in ("target", "path") for a in t.spec.inputs)
                and "constants" not in t.spec.categories and t.spec.id not in PATHS_ONLY]
 
