@@ -11,6 +11,8 @@ def register(commands) -> None:
     test.add_argument("--junit", metavar="FILE", help="write a JUnit XML report")
     test.add_argument("--traces", metavar="DIR", help="folder for failing scenarios' traces (default: a new temporary folder)")
     test.add_argument("--force", action="store_true", help="overwrite an existing --junit file")
+    test.add_argument("--update-golden", action="store_true",
+                      help="rewrite the golden trace of every matchesTrace check from this run (the check then holds)")
     test.set_defaults(handler=command_test)
 
 

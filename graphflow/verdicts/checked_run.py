@@ -167,7 +167,8 @@ class CheckedRun:
     def __init__(self, document: GraphDocument, *, source: str | None = None, variant: Any = None,
                  inputs: ScriptedInputs = ScriptedInputs(), limits: RunLimits = RunLimits(),
                  evaluate_checks: bool = True, seed: int | None = None, gui: bool = False,
-                 listeners: Iterable[Any] = (), simulation: Any = None, evaluator: CheckEvaluator | None = None):
+                 listeners: Iterable[Any] = (), simulation: Any = None, evaluator: CheckEvaluator | None = None,
+                 update_golden: bool = False):
         self.source = source or document.source
         self.variant = variant
         self.document = variant.document if variant is not None else document
@@ -179,6 +180,7 @@ class CheckedRun:
         self.listeners = list(listeners)
         self.simulation = simulation
         self._attached = simulation is not None
+        self.update_golden = update_golden   # matchesTrace checks rewrite their golden traces from this run
         self.verdict = Verdict(self.source, len(self.evaluator),
                                expect_failure=tuple(self.document.scenario.get("expectFailure", ())))
 
@@ -200,6 +202,7 @@ class CheckedRun:
         self.inputs.attach(self.simulation.world)
         for listener in (*self.listeners, self.evaluator):
             self.simulation.add_listener(listener)
+        self.evaluator.attach(self.simulation, self.source, update_golden=self.update_golden)
         self._attached = True
         return self.simulation
 
@@ -245,7 +248,7 @@ class CollectedLog:
 
 
 def run_checked(path: str | Path, *, trace: str | Path | None = None,
-                listeners: Sequence[Any] = ()) -> Verdict:
+                listeners: Sequence[Any] = (), update_golden: bool = False) -> Verdict:
     """Run the scenario file at *path* headless with its scripted inputs and judge its checks.
 
     Bad input (a graph that does not load, a misspelled prim or check target, a missing key file,
@@ -254,7 +257,7 @@ def run_checked(path: str | Path, *, trace: str | Path | None = None,
     path = str(path)
     document = load_document(path)
     checked = CheckedRun(document, source=path, inputs=ScriptedInputs.of_document(document),
-                         listeners=listeners)
+                         listeners=listeners, update_golden=update_golden)
     checked.preflight()
     if checked.time_limit() is None:   # a scenario must end by itself: nothing hangs
         raise BadInput(f"{path}: no run limit: give settings.duration or a stopsBy check")
