@@ -13,6 +13,11 @@ def register(commands) -> None:
     test.add_argument("--force", action="store_true", help="overwrite an existing --junit file")
     test.add_argument("--update-golden", action="store_true",
                       help="rewrite the golden trace of every matchesTrace check from this run (the check then holds)")
+    test.add_argument("--seeds", type=arguments.positive_int, metavar="N",
+                      help="run every scenario as a rate over N seeds (its scenario.randomize drawn per seed)")
+    test.add_argument("--min-pass-rate", type=arguments.probability, metavar="P",
+                      help="gate of rate scenarios that declare no minPassRate (default 0.8): the Wilson lower bound must reach it")
+    test.add_argument("--ray", action="store_true", help="run rate scenarios' episodes on Ray (default: local worker processes)")
     test.set_defaults(handler=command_test)
 
 

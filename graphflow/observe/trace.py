@@ -274,7 +274,7 @@ class Trace:
 
 def read_trace(path: str | Path) -> Trace:
     """Parse a trace file; raise TraceError naming the line when it is not a trace."""
-    from graphflow.files import FileProblem, loads_strict, read_text
+    from graphflow.files import FileProblem, read_text
 
     try:
         text = read_text(path)   # regular files only: never reads /dev/zero forever
