@@ -144,9 +144,10 @@ class Outcome:
         return lines
 
 
-def run_one(item: TestItem, trace: str, update_golden: bool = False) -> Outcome:
+def run_one(item: TestItem, trace: str, update_golden: bool = False, quiet: bool = True) -> Outcome:
     """Worker: run one scenario or case with a trace; the trace is deleted when it passes, else drawn."""
-    logging.getLogger("graphflow").setLevel(logging.ERROR)   # the graph's lines go to the report, not stderr
+    if quiet:
+        logging.getLogger("graphflow").setLevel(logging.ERROR)   # the graph's lines go to the report, not stderr
     started = time.perf_counter()
     name = item.name
     try:
@@ -183,7 +184,7 @@ def failure_artifacts(trace: str) -> tuple[list[str], list[str]]:
     return lines, files
 
 
-def run_rate_item(item: TestItem, jobs: int, ray: bool) -> Outcome:
+def run_rate_item(item: TestItem, jobs: int | None, ray: bool) -> Outcome:
     """A rate item, in this process: its episodes run on the sweep launcher's own workers."""
     started = time.perf_counter()
     try:
