@@ -332,6 +332,7 @@ class MatchesTraceCheck(_Check):
         if self.recorded is None:
             return "no trace recorded (this run reused another's world)", expected
         if self.update:
+            self.golden.parent.mkdir(parents=True, exist_ok=True)
             write_text(self.golden, self.recorded.getvalue(), force=True)
             return None
         try:
