@@ -134,9 +134,9 @@ def test_tutorial_table_is_four_named_items_each_matching_the_tutorial(tmp_path,
     force = float(re.search(r"broken by force ([\d.]+) N > limit 30 N", out).group(1))
     assert 5.0 * 9.81 < force < 1.1 * 5.0 * 9.81   # the 5 kg cube's weight, plus the lift's acceleration
     cases = ET.parse(tmp_path / "t.xml").findall(".//testcase")
-    assert [(c.get("classname"), c.get("name")) for c in cases] == [
-        ("graphs.tutorial_experiments", "tuned, as shipped"), ("graphs.tutorial_experiments", "heavy cube against a low force limit"),
-        ("graphs.tutorial_experiments", "kd = 1"), ("graphs.tutorial_experiments", "grip_threshold 0.001")]
+    assert [c.get("name") for c in cases] == ["tuned, as shipped", "heavy cube against a low force limit", "kd = 1",
+                                              "grip_threshold 0.001"]
+    assert all(c.get("classname").endswith("graphs.tutorial_experiments") for c in cases)   # the table is the class
 
 
 def test_pytest_collects_one_named_item_per_case():
