@@ -36,6 +36,8 @@ def register(commands) -> None:
     validate = commands.add_parser(
         "validate", help="check graph files and the stages they name without running them; print every problem")
     validate.add_argument("graphs", nargs="+", metavar="GRAPH")
+    validate.add_argument("--allow-missing-assets", action="store_true",
+                          help="report inputs naming prims of layers the import could not open as warnings, not errors")
     validate.set_defaults(handler=command_validate)
 
     nodes = commands.add_parser("nodes", help="list the registered node types")
@@ -69,7 +71,7 @@ def command_validate(args) -> int:
     for path in args.graphs:
         problems, warnings_ = file_problems(path), []
         if not problems:   # the graph and its stage load: check what the graph names on that stage
-            problems, warnings_ = deep_validate(load_document(path))
+            problems, warnings_ = deep_validate(load_document(path), allow_missing_assets=args.allow_missing_assets)
         for problem in warnings_:
             print(f"warning: {problem}", file=sys.stderr)
         for problem in problems:

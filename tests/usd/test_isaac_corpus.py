@@ -51,13 +51,13 @@ EXPECTED = {
         "NVIDIA's example script makes the gripper prim at run time; validate names the missing prim"),
     "g02_isaacsim_rename_node_type": Runs(),
     "g03_vla_ur5e_ros2": Fails(
-        "import", "prim /World/ur5e/base_link_inertia has no definition: it comes from /home/sheil/Development/"
+        "validate", "prim /World/ur5e/base_link_inertia has no definition: it comes from /home/sheil/Development/"
         "VLA_Arm_Controller/urdf/ur5e_with_gripper/ur5e_with_gripper.usd (referenced at /World/ur5e)",
         "the UR5e is the author's local file, not in the repository"),
     "g04_krabby_crab_simple": Runs(),
     "g05_spot_diffdrive_ros2": Runs(),
-    "g06_ridgeback_velocity": Fails("import", RIDGEBACK, "the Ridgeback is an online NVIDIA asset"),
-    "g07_ridgeback_ros2_twist": Fails("import", RIDGEBACK, "the Ridgeback is an online NVIDIA asset"),
+    "g06_ridgeback_velocity": Fails("validate", RIDGEBACK, "the Ridgeback is an online NVIDIA asset"),
+    "g07_ridgeback_ros2_twist": Fails("validate", RIDGEBACK, "the Ridgeback is an online NVIDIA asset"),
     "g08_ridgeback_sensors_ros2": Runs((
         f"node 'RenderProduct' (isaacsim.core.nodes.IsaacCreateRenderProduct): {RENDER}",
         "node 'RGBPublish' (isaacsim.ros2.bridge.ROS2CameraHelper): dropped: publishes rendered camera images",
