@@ -20,7 +20,8 @@ from . import GRAPHS, ROOT, line
 
 
 def _rate(path: str, seeds: int, jobs: int) -> tuple[float, int]:
-    from graphflow.verdicts.rates import RatePlan, run_rate
+    from graphflow.sweep.scenario_rates import run_rate
+    from graphflow.verdicts.rates import RatePlan
 
     started = time.perf_counter()
     verdict = run_rate(RatePlan(path, list(range(seeds)), gate=0.0, confidence=0.95), jobs=jobs)

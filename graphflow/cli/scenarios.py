@@ -54,6 +54,7 @@ def command_shrink(args) -> int:
 
 
 def command_test(args) -> int:
+    from graphflow.sweep.scenario_rates import run_rate
     from graphflow.verdicts.suite import command_test as run_suite
 
-    return run_suite(args)
+    return run_suite(args, rate_runner=run_rate)

@@ -13,6 +13,8 @@ Registered through the ``pytest11`` entry point ``graphflow``.
 """
 from __future__ import annotations
 
+import subprocess
+import sys
 import tempfile
 from pathlib import Path
 
@@ -75,19 +77,26 @@ class ScenarioItem(pytest.Item):
         self.add_marker("graphflow_scenario")
 
     def runtest(self):
-        from graphflow.verdicts.suite import run_one, run_rate_item
+        from graphflow.verdicts.suite import run_one
 
         if self.test_item.rate is not None:
-            outcome = run_rate_item(self.test_item, jobs=None, ray=False)
-        else:
-            folder = Path(tempfile.mkdtemp(prefix="graphflow-scenario-"))
-            outcome = run_one(self.test_item, str(folder / f"{self.path.stem}.jsonl"), quiet=False)
-            if outcome.passed or outcome.error is not None:
-                folder.rmdir()
+            self.run_rate()
+            return
+        folder = Path(tempfile.mkdtemp(prefix="graphflow-scenario-"))
+        outcome = run_one(self.test_item, str(folder / f"{self.path.stem}.jsonl"), quiet=False)
+        if outcome.passed or outcome.error is not None:
+            folder.rmdir()
         if outcome.error is not None:   # the graph, its stage, a check target or a key file
             raise ScenarioFailed(outcome.error)
         if not outcome.passed:
             raise ScenarioFailed(*(line.strip() for line in outcome.lines()))
+
+    def run_rate(self):
+        """A rate runs its episodes on sweep workers: through ``graphflow test`` in a process of its own."""
+        result = subprocess.run([sys.executable, "-m", "graphflow", "test", str(self.path)],
+                                capture_output=True, text=True)
+        if result.returncode != 0:
+            raise ScenarioFailed(*(line.strip() for line in (result.stdout + result.stderr).splitlines()[:-1] or ["failed"]))
 
     def repr_failure(self, excinfo, style=None):
         if isinstance(excinfo.value, ScenarioFailed):

@@ -3,24 +3,36 @@
 A scenario whose ``scenario`` section declares ``"seeds": N`` (or any scenario under ``graphflow test
 --seeds N``) runs N episodes, seed ``s0 .. s0+N-1`` (``s0``: the scenario's ``seed``, default 0), each
 with the scenario's ``randomize`` entries (the format of sweeps, docs/sweeps.md) drawn from its seed.
-The episodes run on the sweep launchers (``LocalPool``, or ``RayPool`` with ``--ray``): each worker
-loads the stage once and resets it between episodes. The scenario passes when the lower bound of the
+The episodes run on the sweep launchers (``graphflow.sweep.scenario_rates``: ``LocalPool``, or ``RayPool``
+with ``--ray``): each worker loads the stage once and resets it between episodes. This module is the
+statistics and the verdict; the sweep package, above this one, runs the episodes. The scenario passes when the lower bound of the
 two-sided Wilson interval at ``confidence`` (default 0.95) is at least ``minPassRate``:
 ``47/50 passed, 95 % CI [0.84, 0.98], gate 0.80: PASS``. All N episodes always run (no early stop),
 so the counts are those of the N seeds named.
 """
 from __future__ import annotations
 
-import os
+import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from statistics import NormalDist
 
-from graphflow.errors import BadInput
 from graphflow.files import read_json
 
 DEFAULT_GATE = 0.8          # the gate of a rate scenario that declares none (graphflow test --min-pass-rate)
 DEFAULT_CONFIDENCE = 0.95
+WILSON_Z = 1.959963984540054   # the 97.5 % quantile of the standard normal: a two-sided 95 % interval
+
+
+def wilson_interval(successes: int, n: int, z: float = WILSON_Z) -> tuple[float, float]:
+    """Wilson score interval of a binomial proportion (good at 0 %, 100 % and small n, unlike p ± z·se)."""
+    if n == 0:
+        return (0.0, 1.0)
+    p = successes / n
+    denominator = 1 + z * z / n
+    centre = (p + z * z / (2 * n)) / denominator
+    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / denominator
+    return (max(0.0, centre - half), min(1.0, centre + half))
 
 
 def z_for(confidence: float) -> float:
@@ -51,22 +63,6 @@ def rate_plan(path: str, data: dict, seeds: int | None = None, gate: float | Non
                     float(scenario.get("confidence", DEFAULT_CONFIDENCE)))
 
 
-def scenario_sweep(plan: RatePlan):
-    """The scenario as an in-memory sweep: no grid, its randomization, its seeds; checked as sweeps are."""
-    from graphflow.sweep.definition import Sweep, SweepError, _check
-
-    graph_data = read_json(plan.path)
-    data = {"format": "graphflow-sweep", "formatVersion": [1, 0], "graph": plan.path,
-            "randomize": graph_data.get("scenario", {}).get("randomize", []),
-            "seeds": {"start": plan.seeds[0], "count": len(plan.seeds)}}
-    sweep = Sweep(data, plan.path, graph_data, plan.path)
-    try:
-        _check(sweep)
-    except SweepError as error:
-        raise BadInput(str(error)) from None
-    return sweep
-
-
 @dataclass
 class RateVerdict:
     """The verdict of N episodes: counts, interval, gate; the failing seeds with reasons and re-run commands."""
@@ -87,8 +83,6 @@ class RateVerdict:
         return sum(1 for record in self.records if record["passed"])
 
     def interval(self) -> tuple[float, float]:
-        from graphflow.sweep.results import wilson_interval
-
         return wilson_interval(self.successes, self.runs, z_for(self.plan.confidence))
 
     @property
@@ -131,18 +125,6 @@ class RateVerdict:
         return {"runs": str(self.runs), "passed": str(self.successes), "rate": f"{self.successes / max(1, self.runs):.4f}",
                 "confidence": f"{self.plan.confidence:g}", "interval_low": f"{low:.4f}", "interval_high": f"{high:.4f}",
                 "gate": f"{self.plan.gate:g}", "seeds": f"{self.plan.seeds[0]}..{self.plan.seeds[-1]}"}
-
-
-def run_rate(plan: RatePlan, *, jobs: int | None = None, ray: bool = False) -> RateVerdict:
-    """Run the plan's episodes on the sweep launchers; every episode's record is kept (in seed order)."""
-    from graphflow.sweep.launchers import LocalPool, RayPool
-
-    sweep = scenario_sweep(plan)
-    episodes = sweep.episodes()
-    launcher = RayPool(sweep, jobs, None) if ray else LocalPool(sweep, min(jobs or os.cpu_count() or 1, len(episodes)))
-    records = sorted(launcher.run(episodes), key=lambda record: record["seed"])
-    expect = tuple(read_json(plan.path).get("scenario", {}).get("expectFailure", ()))
-    return RateVerdict(plan.path, plan, records, expect_failure=expect)
 
 
 def randomized_edits(path: str, seed: int) -> list:

@@ -24,7 +24,7 @@ from graphflow.errors import BadInput
 from graphflow.files import FileProblem, read_json, refuse_existing, write_bytes
 from graphflow.verdicts.cases import Case, is_table, load_table, run_case
 from graphflow.verdicts.checked_run import rerun_command, run_checked
-from graphflow.verdicts.rates import RatePlan, rate_plan, run_rate
+from graphflow.verdicts.rates import RatePlan, rate_plan
 
 
 class NoScenarios(BadInput):
@@ -184,11 +184,12 @@ def failure_artifacts(trace: str) -> tuple[list[str], list[str]]:
     return lines, files
 
 
-def run_rate_item(item: TestItem, jobs: int | None, ray: bool) -> Outcome:
-    """A rate item, in this process: its episodes run on the sweep launcher's own workers."""
+def run_rate_item(item: TestItem, jobs: int | None, ray: bool, rate_runner) -> Outcome:
+    """A rate item, in this process: *rate_runner* (``graphflow.sweep.scenario_rates.run_rate``, given by the
+    command line, which sits above both packages) runs its episodes on the sweep launcher's own workers."""
     started = time.perf_counter()
     try:
-        result = run_rate(item.rate, jobs=jobs, ray=ray)
+        result = rate_runner(item.rate, jobs=jobs, ray=ray)
     except BadInput as error:
         return Outcome(item.name, None, error=error.lines()[0], wall=time.perf_counter() - started)
     return Outcome(item.name, result, wall=time.perf_counter() - started, properties=result.properties(),
@@ -196,7 +197,7 @@ def run_rate_item(item: TestItem, jobs: int | None, ray: bool) -> Outcome:
 
 
 def run_all(items: list[TestItem], jobs: int, trace_dir: Path, report=print, *, update_golden: bool = False,
-            ray: bool = False) -> list[Outcome]:
+            ray: bool = False, rate_runner=None) -> list[Outcome]:
     """Run every item, single runs on *jobs* processes and rates on the sweep launcher in turn; report each
     item's lines in the given order as it is known. A file whose problem is already known (it does not
     parse or load) is an ERROR outcome without a run.
@@ -205,7 +206,7 @@ def run_all(items: list[TestItem], jobs: int, trace_dir: Path, report=print, *, 
     outcomes: list[Outcome | None] = [None if item.problem is None else Outcome(item.name, None, error=item.problem)
                                       for item in items]
     runnable = [index for index, item in enumerate(items) if item.problem is None and item.rate is None]
-    futures: dict = {index: _Later(run_rate_item, item, jobs, ray) for index, item in enumerate(items)
+    futures: dict = {index: _Later(run_rate_item, item, jobs, ray, rate_runner) for index, item in enumerate(items)
                      if item.problem is None and item.rate is not None}
     if jobs <= 1 or len(runnable) <= 1:
         futures.update({index: _Later(run_one, items[index], traces[index], update_golden) for index in runnable})
@@ -266,7 +267,7 @@ def junit_xml(outcomes: list[Outcome]) -> bytes:
     return ET.tostring(suites, encoding="utf-8", xml_declaration=True) + b"\n"
 
 
-def command_test(args, report=print) -> int:
+def command_test(args, report=print, rate_runner=None) -> int:
     """Exit 0 when every scenario passes, 1 when one fails, 2 when a scenario or path is bad input."""
     items = collect_items(args.paths, args.seeds, args.min_pass_rate)
     junit = Path(args.junit) if args.junit else None
@@ -278,7 +279,7 @@ def command_test(args, report=print) -> int:
     else:
         trace_dir = Path(tempfile.mkdtemp(prefix="graphflow-test-"))
     outcomes = run_all(items, args.jobs or os.cpu_count() or 1, trace_dir, report, update_golden=args.update_golden,
-                       ray=args.ray)
+                       ray=args.ray, rate_runner=rate_runner)
     if not args.traces and not any(o.trace for o in outcomes):
         shutil.rmtree(trace_dir, ignore_errors=True)
     if junit is not None:
