@@ -5,16 +5,16 @@ A scenario whose ``scenario`` section declares ``"seeds": N`` (or any scenario u
 with the scenario's ``randomize`` entries (the format of sweeps, docs/sweeps.md) drawn from its seed.
 The episodes run on the sweep launchers (``graphflow.sweep.scenario_rates``: ``LocalPool``, or ``RayPool``
 with ``--ray``): each worker loads the stage once and resets it between episodes. This module is the
-statistics and the verdict; the sweep package, above this one, runs the episodes. The scenario passes when the lower bound of the
-two-sided Wilson interval at ``confidence`` (default 0.95) is at least ``minPassRate``:
+statistics and the verdict; the sweep package, above this one, runs the episodes. The scenario passes
+when the lower bound of the two-sided Wilson interval at ``confidence`` (default 0.95) is at least
+``minPassRate``:
 ``47/50 passed, 95 % CI [0.84, 0.98], gate 0.80: PASS``. All N episodes always run (no early stop),
 so the counts are those of the N seeds named.
 """
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
-from pathlib import Path
+from dataclasses import dataclass
 from statistics import NormalDist
 
 from graphflow.files import read_json
@@ -71,8 +71,6 @@ class RateVerdict:
     plan: RatePlan
     records: list[dict]
     expect_failure: tuple[str, ...] = ()
-    output: list[str] = field(default_factory=list)
-    trace: str | None = None
 
     @property
     def runs(self) -> int:
@@ -133,8 +131,4 @@ def randomized_edits(path: str, seed: int) -> list:
 
     entries = read_json(path).get("scenario", {}).get("randomize", [])
     return list(parse_randomization(entries, path).draw(seed))
-
-
-def plan_of_file(path: str | Path, seeds: int | None = None, gate: float | None = None) -> RatePlan | None:
-    return rate_plan(str(path), read_json(path), seeds, gate)
 
