@@ -159,13 +159,6 @@ def rerun_command(path: str) -> str:
     return shlex.join(("graphflow", "run", path))
 
 
-def preflight_problems(document: GraphDocument) -> list[str]:
-    """What ``graphflow validate`` would refuse in an already loaded document, one line each."""
-    from graphflow.validate.preflight import document_problems
-
-    return [str(problem) for problem in document_problems(document)]
-
-
 class CheckedRun:
     """One run of a graph, checked: preflight, world, inputs, listeners, ticks, verdict.
 
@@ -193,23 +186,32 @@ class CheckedRun:
         self.simulation = simulation
         self._attached = simulation is not None
         self.update_golden = update_golden   # matchesTrace checks rewrite their golden traces from this run
+        self._parsed: Any = None   # the preflight's parsed stage (validate.preflight.ParsedStage)
         self.verdict = Verdict(self.source, len(self.evaluator),
                                expect_failure=tuple(self.document.scenario.get("expectFailure", ())))
 
     def preflight(self) -> None:
-        """Refuse what ``validate`` refuses, before anything is built: ``BadInput`` with every problem."""
-        problems = preflight_problems(self.document)
+        """Refuse what ``validate`` refuses, before anything is built: ``BadInput`` with every problem.
+
+        The stage it parses is kept for this run's world, so a run reads (and USD warns about) its stage once.
+        """
+        from graphflow.validate.preflight import document_problems
+
+        problems, self._parsed = document_problems(self.document, quiet=False)
         if problems:
-            raise BadInput("\n".join(problems))
+            raise BadInput("\n".join(str(problem) for problem in problems))
 
     def start(self):
         """Seed, build the world (the one factory), attach inputs and listeners; returns the simulation."""
-        from graphflow.runtime import Simulation
+        from graphflow.runtime import Simulation, create_world_for
 
         seed_everything(self.seed)
         if self._attached:
             return self.simulation
-        world = self.variant.create_world(gui=self.gui) if self.variant is not None else None
+        if self.variant is not None and self.variant.stage_edits:
+            world = self.variant.create_world(gui=self.gui)
+        else:
+            world = create_world_for(self.document, gui=self.gui, parsed=self._parsed)
         self.simulation = Simulation(self.document, world=world, gui=self.gui)
         self.inputs.attach(self.simulation.world)
         for listener in (*self.listeners, self.evaluator):
@@ -259,12 +261,13 @@ class CollectedLog:
             self.lines.append(event.message)
 
 
-def run_checked(path: str | Path, *, trace: str | Path | None = None,
+def run_checked(path: str | Path, *, trace: str | Path | None = None, report: str | Path | None = None,
                 listeners: Sequence[Any] = (), update_golden: bool = False) -> Verdict:
     """Run the scenario file at *path* headless with its scripted inputs and judge its checks.
 
     Bad input (a graph that does not load, a misspelled prim or check target, a missing key file,
     no run limit) raises ``BadInput``; a run-time failure is a failed verdict naming the node.
+    *report*: the run's HTML report (graphflow.report) is written there, passed or failed.
     """
     path = str(path)
     document = load_document(path)
@@ -277,10 +280,20 @@ def run_checked(path: str | Path, *, trace: str | Path | None = None,
     with contextlib.ExitStack() as closing:
         closing.callback(checked.close)
         simulation = checked.start()
+        stream = None
         if trace is not None:
-            from graphflow.observe.trace import TraceRecorder
-
             stream = closing.enter_context(open(trace, "w", encoding="utf-8", newline="\n"))
-            TraceRecorder(simulation, stream, graph=path)
             checked.verdict.trace = str(trace)
-        return checked.run()
+        if report is None:
+            if stream is not None:
+                from graphflow.observe.trace import TraceRecorder
+
+                TraceRecorder(simulation, stream, graph=path)
+            return checked.run()
+        from graphflow.report.recording import ReportRecording, runtime_failure
+
+        recording = ReportRecording(simulation, path, also_to=stream)
+        verdict = checked.run()
+        recording.write(report, checked.document, evaluator=checked.evaluator, runtime_failure=runtime_failure(checked),
+                        seed=checked.seed, force=True)
+        return verdict

@@ -126,6 +126,7 @@ class Outcome:
     files: list[str] = field(default_factory=list)       # the files those lines name
     case: str | None = None                               # the table case's name
     properties: dict = field(default_factory=dict)       # JUnit properties (a rate's counts and interval)
+    report: str | None = None       # the scenario's HTML run report (graphflow test --reports)
 
     @property
     def passed(self) -> bool:
@@ -139,26 +140,31 @@ class Outcome:
         lines += [f"    {failure}" for failure in self.result.failures]
         if not self.passed:
             lines += [f"    {artifact}" for artifact in self.artifacts]
+            if self.report:
+                lines.append(f"    report: {self.report}")
             if self.rerun:
                 lines.append(f"    re-run: {self.rerun}")
         return lines
 
 
-def run_one(item: TestItem, trace: str, update_golden: bool = False, quiet: bool = True) -> Outcome:
-    """Worker: run one scenario or case with a trace; the trace is deleted when it passes, else drawn."""
+def run_one(item: TestItem, trace: str, update_golden: bool = False, quiet: bool = True,
+            report: str | None = None) -> Outcome:
+    """Worker: run one scenario or case with a trace (deleted when it passes, else drawn) and, if asked, a
+    scenario's report (kept)."""
     if quiet:
         logging.getLogger("graphflow").setLevel(logging.ERROR)   # the graph's lines go to the report, not stderr
     started = time.perf_counter()
     name = item.name
     try:
         if item.case is not None:
-            result, rerun = run_case(item.case, trace=trace), item.case.rerun_command()
+            result, rerun, report = run_case(item.case, trace=trace), item.case.rerun_command(), None
         else:
-            result, rerun = run_checked(item.path, trace=trace, update_golden=update_golden), rerun_command(name)
+            result = run_checked(item.path, trace=trace, report=report, update_golden=update_golden)
+            rerun = rerun_command(name)
     except BadInput as error:
         return Outcome(name, None, error=error.lines()[0], wall=time.perf_counter() - started)
     outcome = Outcome(name, result, wall=time.perf_counter() - started, trace=trace, output=result.output,
-                      rerun=rerun, case=item.case.name if item.case is not None else None)
+                      rerun=rerun, case=item.case.name if item.case is not None else None, report=report)
     if result.passed:
         os.unlink(trace)
         outcome.trace = None
@@ -197,22 +203,26 @@ def run_rate_item(item: TestItem, jobs: int | None, ray: bool, rate_runner) -> O
 
 
 def run_all(items: list[TestItem], jobs: int, trace_dir: Path, report=print, *, update_golden: bool = False,
-            ray: bool = False, rate_runner=None) -> list[Outcome]:
+            ray: bool = False, rate_runner=None, report_dir: Path | None = None) -> list[Outcome]:
     """Run every item, single runs on *jobs* processes and rates on the sweep launcher in turn; report each
     item's lines in the given order as it is known. A file whose problem is already known (it does not
     parse or load) is an ERROR outcome without a run.
     """
     traces = [str(trace_dir / f"{index:03d}-{item.path.stem}.jsonl") for index, item in enumerate(items)]
+    reports = [str(report_dir / f"{index:03d}-{item.path.stem}.html") if report_dir is not None else None
+               for index, item in enumerate(items)]
     outcomes: list[Outcome | None] = [None if item.problem is None else Outcome(item.name, None, error=item.problem)
                                       for item in items]
     runnable = [index for index, item in enumerate(items) if item.problem is None and item.rate is None]
     futures: dict = {index: _Later(run_rate_item, item, jobs, ray, rate_runner) for index, item in enumerate(items)
                      if item.problem is None and item.rate is not None}
     if jobs <= 1 or len(runnable) <= 1:
-        futures.update({index: _Later(run_one, items[index], traces[index], update_golden) for index in runnable})
+        futures.update({index: _Later(run_one, items[index], traces[index], update_golden, True, reports[index])
+                        for index in runnable})
         return _report_in_order(outcomes, futures, report)
     with ProcessPoolExecutor(max_workers=min(jobs, len(runnable))) as pool:
-        futures.update({index: pool.submit(run_one, items[index], traces[index], update_golden) for index in runnable})
+        futures.update({index: pool.submit(run_one, items[index], traces[index], update_golden, True, reports[index])
+                        for index in runnable})
         return _report_in_order(outcomes, futures, report)
 
 
@@ -251,9 +261,11 @@ def junit_xml(outcomes: list[Outcome]) -> bytes:
             classname = f"{classname}.{path.stem}"
         case = ET.SubElement(suite, "testcase", name=outcome.case or path.name, classname=classname,
                              file=str(path), time=f"{outcome.wall:.3f}")
-        if outcome.properties:
+        # a rate's counts and interval, the run report beside the verdict (CI servers show testcase properties)
+        shown = {**outcome.properties, **({"report": outcome.report} if outcome.report else {})}
+        if shown:
             properties = ET.SubElement(case, "properties")
-            for key, value in outcome.properties.items():
+            for key, value in shown.items():
                 ET.SubElement(properties, "property", name=key, value=value)
         if outcome.error is not None:
             ET.SubElement(case, "error", message=outcome.error, type="BadInput").text = outcome.error
@@ -267,6 +279,18 @@ def junit_xml(outcomes: list[Outcome]) -> bytes:
     return ET.tostring(suites, encoding="utf-8", xml_declaration=True) + b"\n"
 
 
+def _report_folder(folder: str | None, force: bool) -> Path | None:
+    """The --reports folder, made if missing; one already holding reports only with --force."""
+    if folder is None:
+        return None
+    path = Path(folder)
+    path.mkdir(parents=True, exist_ok=True)
+    existing = sorted(p.name for p in path.glob("*.html"))
+    if existing and not force:
+        raise BadInput(f"{path}: already holds reports ({existing[0]}, ...); not overwriting them (use --force)")
+    return path
+
+
 def command_test(args, report=print, rate_runner=None) -> int:
     """Exit 0 when every scenario passes, 1 when one fails, 2 when a scenario or path is bad input."""
     items = collect_items(args.paths, args.seeds, args.min_pass_rate)
@@ -278,8 +302,9 @@ def command_test(args, report=print, rate_runner=None) -> int:
         trace_dir.mkdir(parents=True, exist_ok=True)
     else:
         trace_dir = Path(tempfile.mkdtemp(prefix="graphflow-test-"))
+    report_dir = _report_folder(getattr(args, "reports", None), args.force)
     outcomes = run_all(items, args.jobs or os.cpu_count() or 1, trace_dir, report, update_golden=args.update_golden,
-                       ray=args.ray, rate_runner=rate_runner)
+                       ray=args.ray, rate_runner=rate_runner, report_dir=report_dir)
     if not args.traces and not any(o.trace for o in outcomes):
         shutil.rmtree(trace_dir, ignore_errors=True)
     if junit is not None:
