@@ -69,9 +69,12 @@ def command_validate(args) -> int:
 
     failed = False
     for path in args.graphs:
-        problems, warnings_ = file_problems(path), []
+        document, problems, warnings_ = _scenario_table(path)   # a table: its graph with the table's checks
+        if document is None and not problems:
+            problems = file_problems(path)
+            document = None if problems else load_document(path)
         if not problems:   # the graph and its stage load: check what the graph names on that stage
-            problems, warnings_ = deep_validate(load_document(path), allow_missing_assets=args.allow_missing_assets)
+            problems, warnings_ = deep_validate(document, allow_missing_assets=args.allow_missing_assets)
         for problem in warnings_:
             print(f"warning: {problem}", file=sys.stderr)
         for problem in problems:
@@ -80,6 +83,23 @@ def command_validate(args) -> int:
             print(f"{path}: ok")
         failed = failed or bool(problems)
     return EXIT_BAD_INPUT if failed else EXIT_OK
+
+
+def _scenario_table(path: str):
+    """(its graph with the table's checks, [], []) for a scenario table, (None, problems, []) for a table that
+    cannot be used, (None, [], []) for any other file."""
+    from graphflow.files import FileProblem, read_json
+    from graphflow.verdicts.cases import graph_with_checks, is_table, load_table
+
+    try:
+        if not is_table(read_json(path)):
+            return None, [], []
+        cases = load_table(path)
+    except FileProblem:
+        return None, [], []   # file_problems says what is wrong with it
+    except BadInput as error:
+        return None, error.lines(), []
+    return graph_with_checks(cases[0].graph, cases[0].checks), [], []
 
 
 def command_nodes(args) -> int:

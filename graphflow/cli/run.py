@@ -47,7 +47,8 @@ def register(commands) -> None:
                      help="override (repeatable): NODE.INPUT=VALUE (a node input) or /Prim/Path.attribute=VALUE "
                           "(a stage attribute, in USD units); VALUE is JSON or a plain string (docs/sweeps.md)")
     run.add_argument("--randomize", metavar="FILE",
-                     help="draw the randomize entries of FILE (a sweep file or {\"randomize\": [...]}) from --seed")
+                     help="draw the randomize entries of FILE (a sweep file, {\"randomize\": [...]}, or a graph's "
+                          "scenario section) from --seed")
     run.add_argument("--log-level", default="warning", choices=["debug", "info", "warning", "error"],
                      help="Python logging level on stderr (default warning)")
     run.add_argument("--trace", metavar="FILE", help="write what happens every tick as JSON Lines (docs/trace.md)")

@@ -316,12 +316,20 @@ class Trace:
 
 def read_trace(path: str | Path) -> Trace:
     """Parse a trace file; raise TraceError naming the line when it is not a trace."""
-    from graphflow.files import FileProblem, loads_strict, read_text
+    from graphflow.files import FileProblem, read_text
 
     try:
-        lines = read_text(path).splitlines()   # regular files only: never reads /dev/zero forever
+        text = read_text(path)   # regular files only: never reads /dev/zero forever
     except FileProblem as error:
         raise TraceError(str(error)) from None
+    return parse_trace(text, path)
+
+
+def parse_trace(text: str, path: str | Path = "<trace>") -> Trace:
+    """A trace from its text (a file's, or one recorded in memory); TraceError naming the line."""
+    from graphflow.files import FileProblem, loads_strict
+
+    lines = text.splitlines()
     records = []
     for number, line in enumerate(lines, start=1):
         try:

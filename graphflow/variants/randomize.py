@@ -191,13 +191,16 @@ def parse_randomization(entries: Sequence[Mapping[str, Any]], source: str) -> Ra
 
 
 def load_randomization(path: str) -> Randomization:
-    """The ``randomize`` list of a sweep file or of a file holding only ``{"randomize": [...]}``."""
+    """The ``randomize`` list of a sweep file, of a file holding only ``{"randomize": [...]}``, or of a graph's
+    ``scenario`` section (a rate scenario's episodes re-run with ``--randomize`` naming the graph itself)."""
     try:
         data = read_json(path)
     except FileProblem as error:
         raise RandomizationError(str(error)) from None
     except json.JSONDecodeError as error:
         raise RandomizationError(f"{path}: malformed JSON at line {error.lineno} column {error.colno}: {error.msg}") from None
+    if isinstance(data, dict) and data.get("format") == "graphflow":
+        data = {"randomize": data.get("scenario", {}).get("randomize", [])}
     problems = schema_problems(data, path, "randomizationFile")
     if problems:
         raise RandomizationError(problems[0])
