@@ -82,6 +82,7 @@ def parse_document(data: Any, source: str = "<graph>", registry: Registry | None
         source=source,
         checks=tuple(frozen_mapping(check) for check in data.get("checks", [])),
         scenario=frozen_mapping(data.get("scenario", {})),
+        schema=data.get("$schema", ""),
     )
     from graphflow.compiler import compile  # checking a document is compiling it
 
