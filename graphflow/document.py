@@ -126,12 +126,14 @@ def _parse_connection(entry: dict) -> Connection:
 
 
 def load_document(path: str | os.PathLike, registry: Registry | None = None) -> GraphDocument:
-    """Read (strict JSON: see graphflow.files) and check a graph file."""
+    """Read (strict JSON: see graphflow.files) and check a graph file; older typeVersions are migrated (graphflow.migration)."""
     try:
         data = read_json(path)
     except FileProblem as error:
         raise GraphError([Problem(str(path), error.reason)]) from None
-    return parse_document(data, str(path), registry)
+    from graphflow.migration import migrate_on_load
+
+    return migrate_on_load(parse_document(data, str(path), registry), registry)
 
 
 def dumps(document: GraphDocument) -> str:

@@ -115,9 +115,17 @@ def first_sentence(text: str) -> str:
 
 
 def command_new(args) -> int:
+    from graphflow.catalog.schema import write_schema
+    from graphflow.cli.editing import SCHEMA_FILE
+
     target = Path(args.name if args.name.endswith(".json") else f"{args.name}.json")
-    save_document(parse_document(json.loads(json.dumps(STARTER_GRAPH)), str(target)), target, force=args.force)
+    starter = {"$schema": SCHEMA_FILE, **json.loads(json.dumps(STARTER_GRAPH))}
+    save_document(parse_document(starter, str(target)), target, force=args.force)
     print(f"wrote {target}")
+    schema = target.parent / SCHEMA_FILE
+    if not schema.exists():   # what "$schema" names, for editors; refresh it with graphflow schema -o --force
+        write_schema(schema)
+        print(f"wrote {schema}")
     return EXIT_OK
 
 

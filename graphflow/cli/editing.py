@@ -1,0 +1,56 @@
+"""Commands for authoring graph files in an editor: ``schema`` (JSON Schema with every node type) and ``migrate``."""
+from __future__ import annotations
+
+import sys
+import warnings
+
+from graphflow.errors import EXIT_OK
+
+SCHEMA_FILE = "graphflow.schema.json"   # the "$schema" graphflow new and graphflow.build write
+
+
+def register(commands) -> None:
+    schema = commands.add_parser(
+        "schema", help="write the JSON Schema of graph files with every registered node type and its inputs")
+    schema.add_argument("-o", "--output", metavar="FILE", help="write it to FILE atomically (default: stdout)")
+    schema.add_argument("--force", action="store_true", help="overwrite an existing FILE")
+    schema.set_defaults(handler=command_schema)
+
+    migrate = commands.add_parser(
+        "migrate", help="rewrite a graph file whose nodes name older typeVersions with the current ones")
+    migrate.add_argument("graph", metavar="GRAPH")
+    migrate.add_argument("-o", "--output", metavar="FILE", help="write the migrated graph to FILE instead of GRAPH")
+    migrate.add_argument("--force", action="store_true", help="overwrite an existing --output FILE")
+    migrate.set_defaults(handler=command_migrate)
+
+
+def command_schema(args) -> int:
+    import json
+
+    from graphflow.catalog.schema import graph_schema, write_schema
+
+    if args.output:
+        write_schema(args.output, force=args.force)
+        print(f"wrote {args.output}")
+    else:
+        sys.stdout.write(json.dumps(graph_schema(), indent=2, sort_keys=True) + "\n")
+    return EXIT_OK
+
+
+def command_migrate(args) -> int:
+    from graphflow.document import load_document, save_document
+    from graphflow.migration import MigrationWarning
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", MigrationWarning)
+        document = load_document(args.graph)
+    lines = [str(warning.message) for warning in caught if issubclass(warning.category, MigrationWarning)]
+    for line in lines:
+        print(line)
+    if not lines and not args.output:
+        print(f"{args.graph}: nothing to migrate (every node is at its type's version)")
+        return EXIT_OK
+    target = args.output or args.graph
+    save_document(document, target, force=args.force or not args.output)
+    print(f"wrote {target}")
+    return EXIT_OK
