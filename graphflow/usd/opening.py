@@ -1,0 +1,112 @@
+"""Opening a stage the one way graphflow does: asset roots, URL remaps, and one line per missing layer.
+
+``open_composed(path)`` installs the asset roots on USD's resolver (``graphflow/ur10.usda``), opens
+the stage through the remap table (``graphflow.usd.remap``) and turns every reference, payload or
+sublayer USD could not open into one line naming the layer, the asset and the prims that lost
+their contents. USD's own C++ warnings about them (printed twice, on stderr) never reach the user.
+Missing layers are a ``StageError`` (exit 2) unless allowed (``--allow-missing-layers``,
+``GRAPHFLOW_ALLOW_MISSING_LAYERS=1`` or ``allow-missing = true`` under ``[assets]`` in graphflow.toml),
+when they are ``MissingLayerWarning`` lines and the stage opens without them.
+"""
+from __future__ import annotations
+
+import contextlib
+import os
+import re
+import sys
+import warnings
+from contextvars import ContextVar
+from pathlib import Path
+
+from graphflow.usd.errors import StageError
+
+ALLOW_VARIABLE = "GRAPHFLOW_ALLOW_MISSING_LAYERS"
+_allowed: ContextVar[bool] = ContextVar("graphflow_allow_missing_layers", default=False)
+_ARC = re.compile(r"Could not open asset @(?P<asset>[^@]*)@ for (?P<arc>reference|payload) introduced by "
+                  r"@(?P<layer>[^@]*)@<(?P<prim>[^>]*)>")
+_SUBLAYER = re.compile(r"Could not load sublayer @(?P<asset>[^@]*)@ of layer @(?P<layer>[^@]*)@")
+
+
+class MissingLayerWarning(UserWarning):
+    """A layer of a stage could not be opened and the stage was allowed to open without it (one line)."""
+
+
+@contextlib.contextmanager
+def missing_layers_allowed(allowed: bool = True):
+    """Within this block, stages open without the layers they cannot find (each a warning line)."""
+    token = _allowed.set(allowed)
+    try:
+        yield
+    finally:
+        _allowed.reset(token)
+
+
+def open_composed(path: str | os.PathLike):
+    """The ``Usd.Stage`` at *path*, composed with graphflow's asset roots and remaps; see the module docstring."""
+    from pxr import Usd
+
+    from graphflow.usd.asset_roots import install_search_path
+    from graphflow.usd.remap import RemappedLayers, remap_table
+
+    install_search_path()
+    label = str(path)
+    table = remap_table(Path(path).parent)
+    layers = RemappedLayers(table)
+    with native_stderr_captured():
+        root = layers.root(str(path)) if table else None
+        stage = Usd.Stage.Open(root) if root is not None else Usd.Stage.Open(str(path))
+        errors = [str(error) for error in stage.GetCompositionErrors()] if stage is not None else []
+    lines = [missing_layer_line(label, message, table) for message in errors]
+    if lines and not _missing_allowed(path):
+        raise StageError(*lines)
+    for line in lines:
+        warnings.warn(MissingLayerWarning(line), stacklevel=2)
+    return stage
+
+
+def missing_layer_line(label: str, message: str, table) -> str:
+    """One line for one composition error: the layer, the asset and the prims left without it."""
+    message = " ".join(message.split())
+    match = _ARC.search(message) or _SUBLAYER.search(message)
+    if match is None:
+        return f"{label}: {message}"
+    asset = re.sub(r"^(\w+):/(?!/)", r"\1://", match["asset"])   # USD prints https:/host for https://host
+    layer = Path(match["layer"]).name if not match["layer"].startswith("anon:") else Path(label).name
+    if "://" in asset and table.apply(asset) is None:
+        hint = " (map its URL prefix to a local folder in graphflow.toml [assets.remap] or GRAPHFLOW_ASSET_REMAP)"
+    elif "://" not in asset and any(asset.startswith(folder) for _, folder in table.entries):
+        hint = " (remapped by graphflow.toml or GRAPHFLOW_ASSET_REMAP; the file is not in that folder)"
+    else:
+        hint = ""
+    if "prim" in match.groupdict():
+        return (f"{label}: cannot open {asset}, the {match['arc']} of {match['prim']} in layer {layer}: "
+                f"prims lost: {match['prim']} is empty, everything below it from that {match['arc']} is missing{hint}")
+    return f"{label}: cannot open {asset}, a sublayer of layer {layer}: prims lost: every prim that layer defines{hint}"
+
+
+def _missing_allowed(path) -> bool:
+    if _allowed.get() or os.environ.get(ALLOW_VARIABLE, "") not in ("", "0"):
+        return True
+    from graphflow.usd.remap import project_setting
+
+    return project_setting(Path(path).parent, "allow-missing") is True
+
+
+@contextlib.contextmanager
+def native_stderr_captured():
+    """Keep what USD's C++ prints on stderr (its TfWarnings) off the terminal while a stage opens."""
+    import ctypes
+    import tempfile
+
+    libc = ctypes.CDLL(None)
+    sys.stderr.flush()
+    libc.fflush(None)
+    saved = os.dup(2)
+    with tempfile.TemporaryFile() as sink:
+        os.dup2(sink.fileno(), 2)
+        try:
+            yield
+        finally:
+            libc.fflush(None)
+            os.dup2(saved, 2)
+            os.close(saved)
