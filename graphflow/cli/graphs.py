@@ -36,6 +36,8 @@ def register(commands) -> None:
     validate = commands.add_parser(
         "validate", help="check graph files and the stages they name without running them; print every problem")
     validate.add_argument("graphs", nargs="+", metavar="GRAPH")
+    validate.add_argument("--allow-missing-layers", action="store_true",
+                          help="a reference, payload or sublayer that cannot be opened is a warning, not a failure")
     validate.set_defaults(handler=command_validate)
 
     nodes = commands.add_parser("nodes", help="list the registered node types")
@@ -62,11 +64,18 @@ def register(commands) -> None:
 
 
 def command_validate(args) -> int:
+    from graphflow.usd.opening import missing_layers_allowed
+
+    with missing_layers_allowed(args.allow_missing_layers):
+        return _validate(args.graphs)
+
+
+def _validate(graphs: list[str]) -> int:
     from graphflow.validate.preflight import file_problems
     from graphflow.validate.stage_names import deep_validate
 
     failed = False
-    for path in args.graphs:
+    for path in graphs:
         problems, warnings_ = file_problems(path), []
         if not problems:   # the graph and its stage load: check what the graph names on that stage
             problems, warnings_ = deep_validate(load_document(path))

@@ -72,12 +72,14 @@ def import_graph(stage_path: str, *, graph_path: str | None = None, output_path:
     *output_path*'s folder when given), so the imported graph runs on the stage it came from.
     """
     from graphflow.usd.errors import StageError
+    from graphflow.usd.opening import missing_layers_allowed
     from graphflow.usd.physics_import import open_stage
 
     registry = registry or default_registry()
     label = str(stage_path)
     try:   # the same reading and messages as `graphflow stage` (file:line:column of a syntax error)
-        stage, _ = open_stage(stage_path)
+        with missing_layers_allowed():   # the graph converts without them; validate and run refuse the stage
+            stage, _ = open_stage(stage_path)
     except StageError as error:
         raise ImportProblem(error.problems) from None
     graphs = find_graphs(stage)

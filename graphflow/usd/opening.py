@@ -56,7 +56,7 @@ def open_composed(path: str | os.PathLike):
         root = layers.root(str(path)) if table else None
         stage = Usd.Stage.Open(root) if root is not None else Usd.Stage.Open(str(path))
         errors = [str(error) for error in stage.GetCompositionErrors()] if stage is not None else []
-    lines = [missing_layer_line(label, message, table) for message in errors]
+    lines = missing_layer_lines(label, errors, table)
     if lines and not _missing_allowed(path):
         raise StageError(*lines)
     for line in lines:
@@ -64,24 +64,40 @@ def open_composed(path: str | os.PathLike):
     return stage
 
 
-def missing_layer_line(label: str, message: str, table) -> str:
-    """One line for one composition error: the layer, the asset and the prims left without it."""
-    message = " ".join(message.split())
-    match = _ARC.search(message) or _SUBLAYER.search(message)
-    if match is None:
-        return f"{label}: {message}"
-    asset = re.sub(r"^(\w+):/(?!/)", r"\1://", match["asset"])   # USD prints https:/host for https://host
-    layer = Path(match["layer"]).name if not match["layer"].startswith("anon:") else Path(label).name
+def missing_layer_lines(label: str, messages: list[str], table) -> list[str]:
+    """One line per asset that cannot be opened: the layer naming it, the asset, and the prims left without it."""
+    from pxr import Sdf
+
+    lost: dict[tuple[str, str, str], list[str]] = {}
+    lines = []
+    for message in (" ".join(m.split()) for m in messages):
+        match = _ARC.search(message) or _SUBLAYER.search(message)
+        if match is None:
+            lines.append(f"{label}: {message}")
+            continue
+        asset = re.sub(r"^(https?|omniverse):/(?!/)", r"\1://", match["asset"])   # USD prints https:/host
+        layer = Path(label).name if match["layer"].startswith("anon:") else Path(match["layer"]).name
+        arc = match["arc"] if "arc" in match.groupdict() else "sublayer"
+        prims = lost.setdefault((asset, arc, layer), [])
+        if arc != "sublayer":
+            prims.append(str(Sdf.Path(match["prim"]).StripAllVariantSelections()))
+    for (asset, arc, layer), prims in lost.items():
+        if arc == "sublayer":
+            what = f"a sublayer of layer {layer}: prims lost: every prim that layer defines"
+        else:
+            shown = ", ".join(dict.fromkeys(prims))
+            what = (f"the {arc} of {shown} in layer {layer}: prims lost: everything that {arc} puts "
+                    f"below {shown}")
+        lines.append(f"{label}: cannot open {asset}, {what}{_hint(asset, table)}")
+    return lines
+
+
+def _hint(asset: str, table) -> str:
     if "://" in asset and table.apply(asset) is None:
-        hint = " (map its URL prefix to a local folder in graphflow.toml [assets.remap] or GRAPHFLOW_ASSET_REMAP)"
-    elif "://" not in asset and any(asset.startswith(folder) for _, folder in table.entries):
-        hint = " (remapped by graphflow.toml or GRAPHFLOW_ASSET_REMAP; the file is not in that folder)"
-    else:
-        hint = ""
-    if "prim" in match.groupdict():
-        return (f"{label}: cannot open {asset}, the {match['arc']} of {match['prim']} in layer {layer}: "
-                f"prims lost: {match['prim']} is empty, everything below it from that {match['arc']} is missing{hint}")
-    return f"{label}: cannot open {asset}, a sublayer of layer {layer}: prims lost: every prim that layer defines{hint}"
+        return " (map its URL prefix to a local folder in graphflow.toml [assets.remap] or GRAPHFLOW_ASSET_REMAP)"
+    if any(asset.startswith(folder) for _, folder in table.entries):
+        return " (remapped by graphflow.toml or GRAPHFLOW_ASSET_REMAP: the file is not in that folder)"
+    return ""
 
 
 def _missing_allowed(path) -> bool:
