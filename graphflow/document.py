@@ -152,8 +152,12 @@ def save_document(document: GraphDocument, path: str | os.PathLike, *, force: bo
 def rebased(document: GraphDocument, path: str | os.PathLike) -> GraphDocument:
     """*document* as it must read when saved at *path*: its relative stage path made relative to that folder."""
     stage = document.settings.get("stage")
-    if not isinstance(stage, str) or stage.startswith("asset:") or Path(stage).is_absolute():
+    if not isinstance(stage, str) or stage.startswith(("asset:", "@")) or Path(stage).is_absolute():
         return document
+    from graphflow.usd.asset_roots import root_file
+
+    if not (document.base_dir / stage).exists() and root_file(stage) is not None:
+        return document   # graphflow/ur10.usda: a packaged asset, found from any folder
     folder = Path(path).resolve().parent
     if folder == document.base_dir:
         return document

@@ -1,4 +1,4 @@
-"""Commands for authoring graph files in an editor: ``schema`` (JSON Schema with every node type) and ``migrate``."""
+"""Commands for authoring a cell: ``schema`` (JSON Schema with every node type), ``migrate`` and ``assets``."""
 from __future__ import annotations
 
 import sys
@@ -22,6 +22,7 @@ def register(commands) -> None:
     migrate.add_argument("-o", "--output", metavar="FILE", help="write the migrated graph to FILE instead of GRAPH")
     migrate.add_argument("--force", action="store_true", help="overwrite an existing --output FILE")
     migrate.set_defaults(handler=command_migrate)
+    register_assets(commands)
 
 
 def command_schema(args) -> int:
@@ -53,4 +54,27 @@ def command_migrate(args) -> int:
     target = args.output or args.graph
     save_document(document, target, force=args.force or not args.output)
     print(f"wrote {target}")
+    return EXIT_OK
+
+
+def register_assets(commands) -> None:
+    assets = commands.add_parser("assets", help="list the asset roots stages can reference (@graphflow/ur10.usda@)")
+    assets.add_argument("--json", action="store_true", help="print one JSON object: root name -> folder and files")
+    assets.set_defaults(handler=command_assets)
+
+
+def command_assets(args) -> int:
+    import json
+
+    from graphflow.usd.asset_roots import asset_roots
+
+    roots = {name: {"folder": str(folder), "files": sorted(p.name for p in folder.glob("*.usd*"))}
+             for name, folder in asset_roots().items()}
+    if args.json:
+        print(json.dumps(roots, indent=2))
+        return EXIT_OK
+    for name, root in roots.items():
+        print(f"{name}/  {root['folder']}")
+        for file in root["files"]:
+            print(f"  @{name}/{file}@")
     return EXIT_OK

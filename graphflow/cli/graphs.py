@@ -50,6 +50,9 @@ def register(commands) -> None:
 
     new = commands.add_parser("new", help="write a starter graph")
     new.add_argument("name", help="file name (.json is added if missing)")
+    new.add_argument("--stage", metavar="ROBOT",
+                     help="also write NAME.usda, a cell around a packaged robot (ur10), and make NAME.json its "
+                          "pick-and-place graph with checks")
     new.add_argument("--force", action="store_true", help="overwrite an existing file")
     new.set_defaults(handler=command_new)
 
@@ -128,8 +131,14 @@ def command_new(args) -> int:
     from graphflow.cli.editing import SCHEMA_FILE
 
     target = Path(args.name if args.name.endswith(".json") else f"{args.name}.json")
-    starter = {"$schema": SCHEMA_FILE, **json.loads(json.dumps(STARTER_GRAPH))}
-    save_document(parse_document(starter, str(target)), target, force=args.force)
+    if args.stage:
+        from graphflow.build.starters import write_cell
+
+        stage, _ = write_cell(target, args.stage, force=args.force)
+        print(f"wrote {stage}")
+    else:
+        starter = {"$schema": SCHEMA_FILE, **json.loads(json.dumps(STARTER_GRAPH))}
+        save_document(parse_document(starter, str(target)), target, force=args.force)
     print(f"wrote {target}")
     schema = target.parent / SCHEMA_FILE
     if not schema.exists():   # what "$schema" names, for editors; refresh it with graphflow schema -o --force
