@@ -43,6 +43,15 @@ def _discard(_entry) -> None:
     """Where ``compute_node`` sends the entries a compute enables: nowhere."""
 
 
+def _refusal(line: str):
+    """The compute of a node whose prim is missing: it fails with the importer's line the first time it runs."""
+    def compute(db):
+        error = GraphRuntimeError(f"node '{db.node_name}' {line}")
+        error.node = db.node_name
+        raise error
+    return compute
+
+
 class GraphRuntimeError(RunFailure):
     """A run-time failure naming the node (exit code 1 from the CLI)."""
 
@@ -180,8 +189,10 @@ class GraphInstance:
     def _bind(self) -> None:
         """Bind the compiled tables to this instance's value dicts (which reset() refills in place)."""
         compiled, databases = self.compiled, self._databases
-        self._computes = tuple(node.node_type.compute for node in compiled.nodes)
-        self._idles = tuple(node.node_type.idle for node in compiled.nodes)
+        missing = compiled.document.missing_assets()
+        self._computes = tuple(_refusal(missing[node.name]) if node.name in missing else node.node_type.compute
+                               for node in compiled.nodes)
+        self._idles = tuple(None if node.name in missing else node.node_type.idle for node in compiled.nodes)
         self._input_dicts = tuple(database.inputs.__dict__ for database in databases)
         self._output_dicts = tuple(database.outputs.__dict__ for database in databases)
         # pulls[i]: (inputs dict of i, input name, outputs dict of the source, source output name)
@@ -230,7 +241,7 @@ class GraphInstance:
         self._pure_stamp[:] = [-1] * count
         for node, database in zip(self.compiled.nodes, self._databases):
             database.reset(node)
-            if node.node_type.initialize is not None:
+            if node.node_type.initialize is not None and self._computes[node.index] is node.node_type.compute:
                 node.node_type.initialize(database)
 
     def database(self, node_name: str) -> NodeDatabase:

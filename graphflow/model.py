@@ -106,6 +106,13 @@ class GraphDocument:
     def node(self, name: str) -> NodeDoc | None:
         return next((n for n in self.nodes if n.name == name), None)
 
+    def missing_assets(self) -> dict[str, str]:
+        """Node name -> the line naming its input whose prim's layer the importer could not open."""
+        lines: dict[str, str] = {}
+        for entry in self.settings.get("missingAssets", ()):
+            lines.setdefault(entry["node"], f"input '{entry['input']}': {entry['message']}")
+        return lines
+
     @property
     def base_dir(self) -> Path:
         return Path(self.source).resolve().parent if self.source != "<graph>" else Path.cwd()

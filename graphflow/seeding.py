@@ -2,9 +2,9 @@
 from __future__ import annotations
 
 import random
+import sys
 from importlib.machinery import ModuleSpec
 from typing import Any
-import sys
 
 
 def seed_everything(seed: int) -> None:

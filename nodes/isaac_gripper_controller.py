@@ -14,6 +14,7 @@ from graphflow.types import ExecState
 SPEC = NodeSpec(
     id="isaacsim.robot.manipulators.IsaacGripperController",
     version=1,
+    aliases=("omni.isaac.manipulators.IsaacGripperController",),
     description=(
         "open / close / stop set the finger joints' target (openPosition, closePosition, or where they are); "
         "every pulse outputs jointNames and positionCommands toward it, at gripperSpeed (m/s or rad/s) when given."),

@@ -24,6 +24,7 @@ SPEC = NodeSpec(
     id="isaacsim.robot.surface_gripper.SurfaceGripper",
     version=3,
     compatible_versions=(1, 2),
+    aliases=("omni.isaac.surface_gripper.SurfaceGripper",),
     description=(
         "Opens, closes or toggles the IsaacSurfaceGripper prim given in SurfaceGripper (Close beats Open "
         "beats Toggle) and reports its status, gripped objects and grip events."),

@@ -39,6 +39,9 @@ def render_markdown(registry: Registry | None = None) -> str:
     for node_type in types:
         spec = node_type.spec
         lines.append(f"| [{spec.id}](#{_anchor(spec.id)}) | {_cell(spec.ui_name)} | {spec.version} | {_kind(spec)} |")
+    from graphflow.usd.libraries import render_coverage
+
+    lines += [""] + render_coverage(registry or default_registry())
     for node_type in types:
         lines += [""] + _section(node_type)
     return "\n".join(lines) + "\n"

@@ -36,8 +36,9 @@ def register(commands) -> None:
     validate = commands.add_parser(
         "validate", help="check graph files and the stages they name without running them; print every problem")
     validate.add_argument("graphs", nargs="+", metavar="GRAPH")
-    validate.add_argument("--allow-missing-layers", action="store_true",
-                          help="a reference, payload or sublayer that cannot be opened is a warning, not a failure")
+    validate.add_argument("--allow-missing-assets", action="store_true",
+                          help="a reference, payload or sublayer of the stage that cannot be opened, and inputs naming "
+                               "prims of such layers, are warnings, not errors")
     validate.set_defaults(handler=command_validate)
 
     nodes = commands.add_parser("nodes", help="list the registered node types")
@@ -67,13 +68,13 @@ def register(commands) -> None:
 
 
 def command_validate(args) -> int:
-    from graphflow.usd.opening import missing_layers_allowed
+    from graphflow.usd.opening import missing_layers_refused
 
-    with missing_layers_allowed(args.allow_missing_layers):
-        return _validate(args.graphs)
+    with missing_layers_refused(not args.allow_missing_assets):
+        return _validate(args.graphs, args.allow_missing_assets)
 
 
-def _validate(graphs: list[str]) -> int:
+def _validate(graphs: list[str], allow_missing_assets: bool) -> int:
     from graphflow.validate.preflight import file_problems
     from graphflow.validate.stage_names import deep_validate
 
@@ -81,7 +82,7 @@ def _validate(graphs: list[str]) -> int:
     for path in graphs:
         problems, warnings_ = file_problems(path), []
         if not problems:   # the graph and its stage load: check what the graph names on that stage
-            problems, warnings_ = deep_validate(load_document(path))
+            problems, warnings_ = deep_validate(load_document(path), allow_missing_assets=allow_missing_assets)
         for problem in warnings_:
             print(f"warning: {problem}", file=sys.stderr)
         for problem in problems:

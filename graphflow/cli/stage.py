@@ -24,15 +24,15 @@ def register(commands) -> None:
     stage.add_argument("--json", action="store_true", help="print one JSON object")
     stage.add_argument("--simulate", type=arguments.seconds, metavar="SECONDS",
                        help="step the stage with drives at their targets and report how far bodies moved")
-    stage.add_argument("--allow-missing-layers", action="store_true",
+    stage.add_argument("--allow-missing-assets", action="store_true",
                        help="a reference, payload or sublayer that cannot be opened is a warning, not a failure")
     stage.set_defaults(handler=command_stage)
 
 
 def command_stage(args) -> int:
-    from graphflow.usd.opening import missing_layers_allowed
+    from graphflow.usd.opening import missing_layers_refused
 
-    with missing_layers_allowed(args.allow_missing_layers):
+    with missing_layers_refused(not args.allow_missing_assets):
         return run_stage_command(args.stage, as_json=args.json, simulate_seconds=args.simulate)
 
 

@@ -25,7 +25,7 @@
 
 Nodes that read prims are checked twice by the test suite: on a ``ClockWorld``
 (where they must refuse clearly) and on a packaged stage with inputs naming its prims
-(see tests/test_node_checker.py).
+(see tests/testing/test_node_checker.py).
 """
 from __future__ import annotations
 

@@ -14,8 +14,10 @@
   they are gathered into graphflow's ``messageFields`` JSON.
 * Target prims must exist in the composed stage: when one does not because a
   referenced or payloaded layer could not be opened (an online NVIDIA asset,
-  an author's local file), the import fails with a line naming the prim and
-  that layer; a target no layer defines is a warning line.
+  an author's local file), the input is kept with a line naming the prim and
+  that layer, and recorded in ``settings.missingAssets`` (validate reports it,
+  run fails at the node's first compute); a target no layer defines is a
+  warning line.
 """
 from __future__ import annotations
 
@@ -23,16 +25,34 @@ import json
 import math
 
 RENDER_PRODUCT = "needs Kit's RTX renderer (render products do not exist headless)"
-RENDERING_NODES = {
-    "isaacsim.core.nodes.IsaacCreateRenderProduct": RENDER_PRODUCT,
-    "omni.isaac.core_nodes.IsaacCreateRenderProduct": RENDER_PRODUCT,
-    "isaacsim.ros2.bridge.ROS2CameraHelper": "publishes rendered camera images (needs Kit's renderer)",
-    "omni.isaac.ros2_bridge.ROS2CameraHelper": "publishes rendered camera images (needs Kit's renderer)",
-    "isaacsim.ros2.bridge.ROS2CameraInfoHelper": "publishes a render product's camera info (needs Kit's renderer)",
-    "omni.isaac.ros2_bridge.ROS2CameraInfoHelper": "publishes a render product's camera info (needs Kit's renderer)",
-    "isaacsim.ros2.bridge.ROS2RtxLidarHelper": "publishes RTX lidar scans (ray-traced by Kit's renderer)",
-    "omni.isaac.ros2_bridge.ROS2RtxLidarHelper": "publishes RTX lidar scans (ray-traced by Kit's renderer)",
+RENDERED_IMAGE = "processes rendered images (needs Kit's renderer)"
+VIEWPORT = "drives a Kit viewport window (no GUI headless)"
+RTX_SENSOR = "reads an RTX sensor (ray-traced by Kit's renderer)"
+# the library prefixes each node type was published under: Isaac Sim 5.x and the 4.x omni.isaac ids
+_CORE, _ROS2 = ("isaacsim.core.nodes", "omni.isaac.core_nodes"), ("isaacsim.ros2.bridge", "omni.isaac.ros2_bridge")
+_RTX = ("isaacsim.sensors.rtx", "omni.isaac.sensor")
+_RENDERING = {
+    _CORE: {"IsaacCreateRenderProduct": RENDER_PRODUCT, "IsaacGetViewportRenderProduct": RENDER_PRODUCT,
+            "IsaacSetCameraOnRenderProduct": RENDER_PRODUCT, "IsaacCreateViewport": VIEWPORT,
+            "IsaacSetViewportResolution": VIEWPORT, "IsaacAttachHydraTexture": VIEWPORT,
+            "IsaacConvertDepthToPointCloud": RENDERED_IMAGE, "IsaacConvertRGBAToRGB": RENDERED_IMAGE,
+            "IsaacGenerate32FC1": RENDERED_IMAGE, "IsaacGenerateRGBA": RENDERED_IMAGE,
+            "IsaacPassthroughImagePtr": RENDERED_IMAGE, "IsaacReadCameraInfo": RENDER_PRODUCT,
+            "IsaacReadSimulationTimeAnnotator": RENDER_PRODUCT, "IsaacReadSystemTimeAnnotator": RENDER_PRODUCT},
+    _ROS2: {"ROS2CameraHelper": "publishes rendered camera images (needs Kit's renderer)",
+            "ROS2CameraInfoHelper": "publishes a render product's camera info (needs Kit's renderer)",
+            "ROS2RtxLidarHelper": "publishes RTX lidar scans (ray-traced by Kit's renderer)",
+            "ROS2RtxLidarPointCloudConfig": RTX_SENSOR, "ROS2RtxRadarHelper": RTX_SENSOR,
+            "ROS2PublishImage": RENDERED_IMAGE, "ROS2PublishCompressedImage": RENDERED_IMAGE,
+            "ROS2PublishCameraInfo": RENDER_PRODUCT, "ROS2PublishBbox2D": RENDERED_IMAGE,
+            "ROS2PublishBbox3D": RENDERED_IMAGE, "ROS2PublishSemanticLabels": RENDERED_IMAGE,
+            "ROS2PublishObjectIdMap": RENDERED_IMAGE, "ROS2PublishPointCloud": RTX_SENSOR,
+            "ROS2PublishLaserScan": RTX_SENSOR},
+    _RTX: {"IsaacExtractRTXSensorPointCloud": RTX_SENSOR, "IsaacComputeRTXLidarFlatScan": RTX_SENSOR,
+           "IsaacCreateRTXLidarScanBuffer": RTX_SENSOR, "IsaacReadRTXLidarData": RTX_SENSOR},
 }
+RENDERING_NODES = {f"{prefix}.{name}": reason for prefixes, names in _RENDERING.items()
+                   for prefix in prefixes for name, reason in names.items()}
 
 SURFACE_GRIPPER_IDS = ("isaacsim.robot.surface_gripper.SurfaceGripper", "omni.isaac.surface_gripper.SurfaceGripper")
 LEGACY_GRIPPER_ID = "graphflow.LegacySurfaceGripper"
@@ -127,12 +147,12 @@ def gather_message_fields(fields: dict, where: str, notes: list[str]) -> str:
 
 
 def missing_target(stage, target: str) -> tuple[str, bool] | None:
-    """Why *target* cannot be used and whether that fails the import, or None when it is fine.
+    """Why *target* cannot be used and whether its layer is missing, or None when it is fine.
 
     A target under a reference or payload that cannot be opened (an online
-    asset, an author's local file) fails, naming that layer: the robot is not
-    there to run against. A prim may exist only as an ``over`` its author kept
-    while that layer is absent, which fails the same way. A target no layer
+    asset, an author's local file) is missing, naming that layer: the robot is
+    not there to run against. A prim may exist only as an ``over`` its author
+    kept while that layer is absent, which is missing the same way. A target no layer
     defines (a script adds it at run time, as Isaac's gantry sample does) is a
     warning: the user can add it with a stage that sublayers the file.
     """

@@ -5,7 +5,11 @@ usd-core composes what Kit left in the file (list-op residue such as
 paths), so the importer reads composed values only. Node type ids go through
 the registry (legacy ids resolve through aliases); inputs graphflow's node does
 not declare are dropped with a warning; unknown node types are errors unless
-the caller asks to skip them (their connections go too).
+the caller asks to skip them (their connections go too). The import degrades
+rather than refuses: an input naming a prim of a layer that cannot be opened
+is kept and named (node_mapping.missing_target), any typeVersion loads
+(graph_parts.map_version), and every graph of the file is imported with its
+variables (graph_parts).
 """
 from __future__ import annotations
 
@@ -22,6 +26,7 @@ from graphflow.document import (
 )
 from graphflow.errors import BadInput
 from graphflow.registry import Registry, default_registry
+from graphflow.usd.graph_parts import PORT_CHANGES, graph_prefixes, graph_variables, map_version, prefixed
 from graphflow.usd.node_mapping import (
     GENERIC_PUBLISHERS,
     LEGACY_GRIPPER_COMMANDS,
@@ -66,45 +71,76 @@ def find_graphs(stage) -> list[str]:
 
 def import_graph(stage_path: str, *, graph_path: str | None = None, output_path: str | None = None,
                  skip_unknown: bool = False, registry: Registry | None = None) -> ImportResult:
-    """Convert one OmniGraph of a USD file into a validated graphflow document.
+    """Convert the OmniGraphs of a USD file (or the one at *graph_path*) into one validated graphflow document.
 
     The document's ``settings.stage`` points at the USD file (relative to
     *output_path*'s folder when given), so the imported graph runs on the stage it came from.
+    Kit evaluates every graph of a stage: without *graph_path* all of them are imported, their
+    node and variable names prefixed with the graph's name when there are several.
     """
     from graphflow.usd.errors import StageError
-    from graphflow.usd.opening import missing_layers_allowed
     from graphflow.usd.physics_import import open_stage
 
     registry = registry or default_registry()
     label = str(stage_path)
     try:   # the same reading and messages as `graphflow stage` (file:line:column of a syntax error)
-        with missing_layers_allowed():   # the graph converts without them; validate and run refuse the stage
-            stage, _ = open_stage(stage_path)
+        stage, _ = open_stage(stage_path)
     except StageError as error:
         raise ImportProblem(error.problems) from None
     graphs = find_graphs(stage)
     if graph_path is None:
         if not graphs:
             raise ImportProblem([f"{label}: no OmniGraph prim in this stage"])
-        if len(graphs) > 1:
-            raise ImportProblem([f"{label}: several graphs ({', '.join(graphs)}); choose one with --graph"])
-        graph_path = graphs[0]
-    graph_prim = stage.GetPrimAtPath(graph_path)
-    if not graph_prim or graph_prim.GetTypeName() != GRAPH_TYPE:
-        raise ImportProblem([f"{label}: {graph_path} is not an OmniGraph prim (graphs here: {', '.join(graphs) or 'none'})"])
+        selected = graphs
+    else:
+        graph_prim = stage.GetPrimAtPath(graph_path)
+        if not graph_prim or graph_prim.GetTypeName() != GRAPH_TYPE:
+            raise ImportProblem([f"{label}: {graph_path} is not an OmniGraph prim (graphs here: {', '.join(graphs) or 'none'})"])
+        selected = [graph_path]
 
     warnings: list[str] = []
+    problems: list[str] = []
+    prefixes = graph_prefixes(selected) if len(selected) > 1 else {selected[0]: ""}
+    merged: dict = {"nodes": [], "connections": [], "ui": {}, "variables": [], "missingAssets": []}
+    for path in selected:
+        part = _import_one(stage, stage.GetPrimAtPath(path), label, registry, skip_unknown, warnings, problems)
+        for key, value in prefixed(part, prefixes[path]).items():
+            merged[key].update(value) if key == "ui" else merged[key].extend(value)
+    if problems:
+        raise ImportProblem(problems)
+
+    settings = {"evaluator": "execution", "stage": _stage_reference(stage_path, output_path)}
+    if merged["missingAssets"]:
+        settings["missingAssets"] = merged["missingAssets"]
+    data = {"format": FORMAT_NAME, "formatVersion": list(FORMAT_VERSION),
+            "description": f"Imported from {Path(stage_path).name}:{', '.join(selected)}",
+            "settings": settings, "nodes": merged["nodes"], "connections": merged["connections"]}
+    if merged["variables"]:
+        data["variables"] = merged["variables"]
+    if merged["ui"]:
+        data["ui"] = {"nodes": merged["ui"]}
+    try:
+        document = parse_document(data, source=output_path or f"{label}:{', '.join(selected)}", registry=registry)
+    except GraphError as error:   # name the .usda the values came from, not the graph file not yet written
+        raise ImportProblem([str(replace(problem, file=label)) for problem in error.problems]) from None
+    return ImportResult(document, ", ".join(selected), warnings)
+
+
+def _import_one(stage, graph_prim, label: str, registry: Registry, skip_unknown: bool,
+                warnings: list[str], problems: list[str]) -> dict:
+    """One OmniGraph prim as unprefixed document parts (nodes, connections, ui, variables, missing assets)."""
+    graph_path = str(graph_prim.GetPath())
     evaluator = _value(graph_prim.GetAttribute("evaluator:type"))
     if evaluator not in (None, "execution"):
         warnings.append(f"{label}: {graph_path}: evaluator {evaluator!r} imported as an action graph (execution)")
 
     node_prims = [child for child in graph_prim.GetChildren() if child.GetTypeName() == NODE_TYPE]
-    problems, nodes, kept, ui, renames, extra_connections = [], [], {}, {}, {}, []
+    nodes, kept, ui, renames, extra_connections, missing_assets = [], {}, {}, {}, [], []
     for prim in node_prims:
         name, type_id = prim.GetName(), _value(prim.GetAttribute("node:type"))
         version = _value(prim.GetAttribute("node:typeVersion"))
         if type_id in RENDERING_NODES:
-            warnings.append(f"{label}: node '{name}' ({type_id}): dropped: {RENDERING_NODES[type_id]}")
+            warnings.append(f"{label}: node '{name}' ({type_id}): dropped: {RENDERING_NODES[type_id]} ({prim.GetPath()})")
             continue
         legacy_gripper = is_legacy_surface_gripper(type_id, version)
         if legacy_gripper:
@@ -120,6 +156,10 @@ def import_graph(stage_path: str, *, graph_path: str | None = None, output_path:
                 problems.append(message)
             continue
         kept[name] = node_type
+        if version is not None and _version_mapped(node_type.spec, int(version)):
+            changes = map_version(node_type.spec, int(version), _ports(prim), f"{label}: node '{name}'", warnings)
+            renames.update({(name, old): (f"{name}.{new}" if new else None) for old, new in changes.items()})
+            version = node_type.spec.version
         inputs = _mapped_inputs(prim, node_type, label, warnings, problems, renames)
         if legacy_gripper and any(prim.GetAttribute(pin).GetConnections() for pin in LEGACY_GRIPPER_COMMANDS):
             command, link = legacy_gripper_command_node(name, f"{label}: node '{name}'", warnings)
@@ -130,8 +170,10 @@ def import_graph(stage_path: str, *, graph_path: str | None = None, output_path:
                 for target in inputs.get(attribute.name, ()):
                     missing = missing_target(stage, target)
                     if missing:
-                        (problems if missing[1] else warnings).append(
-                            f"{label}: node '{name}' input 'inputs:{attribute.name}': {missing[0]}")
+                        warnings.append(f"{label}: node '{name}' input 'inputs:{attribute.name}': {missing[0]}")
+                        if missing[1]:   # kept: only the computes that need the prim fail
+                            missing_assets.append({"node": name, "input": f"inputs:{attribute.name}",
+                                                   "message": missing[0]})
         entry = {"name": name, "type": type_id, "inputs": inputs}
         if version is not None:
             entry["typeVersion"] = int(version)
@@ -141,21 +183,20 @@ def import_graph(stage_path: str, *, graph_path: str | None = None, output_path:
         position = _value(prim.GetAttribute(UI_POSITION))
         if position is not None:
             ui[name] = {"pos": [round(float(c), 3) for c in position]}
-    if problems:
-        raise ImportProblem(problems)
-
     connections = _connections(node_prims, graph_prim.GetPath(), kept, label, warnings, renames) + extra_connections
-    settings = {"evaluator": "execution", "stage": _stage_reference(stage_path, output_path)}
-    data = {"format": FORMAT_NAME, "formatVersion": list(FORMAT_VERSION),
-            "description": f"Imported from {Path(stage_path).name}:{graph_path}",
-            "settings": settings, "nodes": nodes, "connections": connections}
-    if ui:
-        data["ui"] = {"nodes": ui}
-    try:
-        document = parse_document(data, source=output_path or f"{label}:{graph_path}", registry=registry)
-    except GraphError as error:   # name the .usda the values came from, not the graph file not yet written
-        raise ImportProblem([str(replace(problem, file=label)) for problem in error.problems]) from None
-    return ImportResult(document, graph_path, warnings)
+    return {"nodes": nodes, "connections": connections, "ui": ui, "missingAssets": missing_assets,
+            "variables": graph_variables(graph_prim, label, _value, warnings)}
+
+
+def _version_mapped(spec, version: int) -> bool:
+    """Whether a node authored at *version* needs mapping: a version graphflow lacks, or one whose ports moved."""
+    return not spec.accepts_version(version) or (version != spec.version and (spec.id, version) in PORT_CHANGES)
+
+
+def _ports(prim) -> set[str]:
+    """The node prim's inputs and outputs that carry a value or a connection (what a version change can break)."""
+    return {prop.GetName() for prop in prim.GetAuthoredProperties()
+            if prop.GetName().startswith(("inputs:", "outputs:")) and _has_content(prop)}
 
 
 def _stage_reference(stage_path: str, output_path: str | None) -> str:
@@ -163,12 +204,13 @@ def _stage_reference(stage_path: str, output_path: str | None) -> str:
     return Path(os.path.relpath(Path(stage_path).resolve(), base)).as_posix()
 
 
-def _authored_inputs(prim, node_type, label: str, warnings: list[str]) -> dict:
+def _authored_inputs(prim, node_type, label: str, warnings: list[str], removed: frozenset | set = frozenset()) -> dict:
+    """Authored values of graphflow's inputs; others dropped with a line (*removed*: already named by a version map)."""
     spec = node_type.spec
     inputs = {}
     for prop in prim.GetAuthoredProperties():
         name = prop.GetName()
-        if not name.startswith("inputs:"):
+        if not name.startswith("inputs:") or name in removed:
             continue
         attribute = spec.attribute(name)
         if attribute is None:
@@ -213,7 +255,8 @@ def _mapped_inputs(prim, node_type, label: str, warnings: list[str], problems: l
         if fields:
             inputs["messageFields"] = gather_message_fields(fields, where, warnings)
         return inputs
-    return _authored_inputs(prim, node_type, label, warnings)
+    removed = {port for (node, port), new in renames.items() if node == name and new is None}
+    return _authored_inputs(prim, node_type, label, warnings, removed)
 
 
 def _raw_inputs(prim) -> dict:
@@ -265,8 +308,25 @@ def _connections(node_prims, graph_path, kept: dict, label: str, warnings: list[
                 if source_name.startswith("inputs:"):
                     # Kit lets constants be read from their input; graphflow's constants expose it as an output
                     source_name = "outputs:" + source_name.split(":", 1)[1]
-                connections.append({"src": f"{source_node.name}.{source_name}", "dst": destination})
+                source_name = renames.get((source_node.name, source_name), f"{source_node.name}.{source_name}")
+                gone = ("its source port was removed in this version" if source_name is None
+                        else _missing_port(kept, source_name) or _missing_port(kept, destination))
+                if gone:
+                    warnings.append(f"{where}: connection from {source} dropped: {gone}")
+                    continue
+                connections.append({"src": source_name, "dst": destination})
     return connections
+
+
+def _missing_port(kept: dict, endpoint: str | None) -> str | None:
+    """``ID PORT`` when *endpoint* (``node.port``) names a port its imported node's type does not have."""
+    if endpoint is None:
+        return None
+    node, port = endpoint.split(".", 1)
+    node_type = kept.get(node)
+    if node_type is None or node_type.spec.attribute(port) is not None:
+        return None
+    return f"graphflow's {node_type.spec.id} has no port '{port}'"
 
 
 def _value(attribute):

@@ -4,9 +4,10 @@
 the stage through the remap table (``graphflow.usd.remap``) and turns every reference, payload or
 sublayer USD could not open into one line naming the layer, the asset and the prims that lost
 their contents. USD's own C++ warnings about them (printed twice, on stderr) never reach the user.
-Missing layers are a ``StageError`` (exit 2) unless allowed (``--allow-missing-layers``,
-``GRAPHFLOW_ALLOW_MISSING_LAYERS=1`` or ``allow-missing = true`` under ``[assets]`` in graphflow.toml),
-when they are ``MissingLayerWarning`` lines and the stage opens without them.
+Missing layers are ``MissingLayerWarning`` lines and the stage opens without them (import, run: a node
+touching a lost prim fails naming itself), except where the user asks whether a stage is complete:
+``graphflow validate`` and ``graphflow stage`` refuse them (``StageError``, exit 2) unless given
+``--allow-missing-assets`` or ``GRAPHFLOW_ALLOW_MISSING_ASSETS=1``.
 """
 from __future__ import annotations
 
@@ -20,8 +21,8 @@ from pathlib import Path
 
 from graphflow.usd.errors import StageError
 
-ALLOW_VARIABLE = "GRAPHFLOW_ALLOW_MISSING_LAYERS"
-_allowed: ContextVar[bool] = ContextVar("graphflow_allow_missing_layers", default=False)
+ALLOW_VARIABLE = "GRAPHFLOW_ALLOW_MISSING_ASSETS"
+_refused: ContextVar[bool] = ContextVar("graphflow_missing_layers_refused", default=False)
 _ARC = re.compile(r"Could not open asset @(?P<asset>[^@]*)@ for (?P<arc>reference|payload) introduced by "
                   r"@(?P<layer>[^@]*)@<(?P<prim>[^>]*)>")
 _SUBLAYER = re.compile(r"Could not load sublayer @(?P<asset>[^@]*)@ of layer @(?P<layer>[^@]*)@")
@@ -32,13 +33,13 @@ class MissingLayerWarning(UserWarning):
 
 
 @contextlib.contextmanager
-def missing_layers_allowed(allowed: bool = True):
-    """Within this block, stages open without the layers they cannot find (each a warning line)."""
-    token = _allowed.set(allowed)
+def missing_layers_refused(refused: bool = True):
+    """Within this block (validate, stage), a stage with a layer that cannot be opened is a StageError."""
+    token = _refused.set(refused)
     try:
         yield
     finally:
-        _allowed.reset(token)
+        _refused.reset(token)
 
 
 def open_composed(path: str | os.PathLike):
@@ -57,7 +58,7 @@ def open_composed(path: str | os.PathLike):
         stage = Usd.Stage.Open(root) if root is not None else Usd.Stage.Open(str(path))
         errors = [str(error) for error in stage.GetCompositionErrors()] if stage is not None else []
     lines = missing_layer_lines(label, errors, table)
-    if lines and not _missing_allowed(path):
+    if lines and _refused.get() and os.environ.get(ALLOW_VARIABLE, "") in ("", "0"):
         raise StageError(*lines)
     for line in lines:
         warnings.warn(MissingLayerWarning(line), stacklevel=2)
@@ -98,14 +99,6 @@ def _hint(asset: str, table) -> str:
     if any(asset.startswith(folder) for _, folder in table.entries):
         return " (remapped by graphflow.toml or GRAPHFLOW_ASSET_REMAP: the file is not in that folder)"
     return ""
-
-
-def _missing_allowed(path) -> bool:
-    if _allowed.get() or os.environ.get(ALLOW_VARIABLE, "") not in ("", "0"):
-        return True
-    from graphflow.usd.remap import project_setting
-
-    return project_setting(Path(path).parent, "allow-missing") is True
 
 
 @contextlib.contextmanager

@@ -64,12 +64,6 @@ def remap_table(start: str | os.PathLike | None = None) -> RemapTable:
     return RemapTable(ordered, tuple(sources))
 
 
-def project_setting(start: str | os.PathLike, name: str):
-    """A value under ``[assets]`` in the nearest graphflow.toml (None when absent)."""
-    project = _project_file(Path(start))
-    return _read(project).get("assets", {}).get(name) if project is not None else None
-
-
 def _project_file(folder: Path) -> Path | None:
     for candidate in (folder.resolve(), *folder.resolve().parents):
         if (candidate / PROJECT_FILE).is_file():

@@ -61,14 +61,25 @@ def usd_syntax_error(message: str) -> str:
     return f"{found['file']}:{found['line']}:{found['column']}: {text}"
 
 
-def deep_validate(document: GraphDocument, registry: Registry | None = None) -> tuple[list[Problem], list[Problem]]:
-    """(errors, warnings) of a loaded document: its stage references, then its exec wiring."""
+def deep_validate(document: GraphDocument, registry: Registry | None = None, *,
+                  allow_missing_assets: bool = False) -> tuple[list[Problem], list[Problem]]:
+    """(errors, warnings) of a loaded document: its stage references, then its exec wiring.
+
+    Inputs the importer kept although their prim's layer could not be opened
+    (``settings.missingAssets``) are errors, or warnings with *allow_missing_assets*.
+    """
     registry = registry or default_registry()
     errors: list[Problem] = []
+    missing = [Problem(document.source, entry["message"], node=entry["node"], attribute=entry["input"])
+               for entry in document.settings.get("missingAssets", ())]
     reference = document.settings.get("stage")
     if reference is not None:
-        errors.extend(_stage_problems(document, registry, reference))
-    return errors, _wiring_warnings(document, registry)
+        skipped = {(problem.node, problem.attribute) for problem in missing}
+        errors.extend(problem for problem in _stage_problems(document, registry, reference)
+                      if (problem.node, problem.attribute) not in skipped)
+    if not allow_missing_assets:
+        return missing + errors, _wiring_warnings(document, registry)
+    return errors, missing + _wiring_warnings(document, registry)
 
 
 def _spec_id(registry, node) -> str:

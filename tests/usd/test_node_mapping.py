@@ -116,27 +116,3 @@ def test_rendering_nodes_drop_with_a_reason_and_generic_publisher_fields_gather(
     assert json.loads(document.node("status").inputs["messageFields"]) == {"data": "ready"}
     assert any("node 'render_product' (isaacsim.core.nodes.IsaacCreateRenderProduct): dropped: needs Kit's RTX "
                "renderer" in w for w in result.warnings)
-
-
-def test_target_under_a_missing_payload_fails_naming_prim_and_layer(tmp_path):
-    stage = tmp_path / "scene.usda"
-    stage.write_text('''#usda 1.0
-def Xform "Robot" (
-    prepend payload = @https://example.invalid/robots/arm.usd@
-)
-{
-}
-def OmniGraph "Graph"
-{
-    def OmniGraphNode "controller"
-    {
-        token node:type = "isaacsim.core.nodes.IsaacArticulationController"
-        custom rel inputs:targetPrim = </Robot/base_link>
-    }
-}
-''')
-    with pytest.raises(ImportProblem) as caught:
-        import_graph(str(stage))
-    assert caught.value.problems == [
-        f"{stage}: node 'controller' input 'inputs:targetPrim': prim /Robot/base_link is not in the stage: it comes "
-        "from https://example.invalid/robots/arm.usd (referenced at /Robot), which cannot be opened"]

@@ -7,7 +7,8 @@ import pytest
 from conftest import CORPUS_FILES, GRAPHS, ROOT
 
 from graphflow.cli import main
-from graphflow.usd.opening import MissingLayerWarning, open_composed
+from graphflow.usd.errors import StageError
+from graphflow.usd.opening import MissingLayerWarning, missing_layers_refused, open_composed
 
 PACKAGED = ROOT / "graphflow" / "assets"
 NVIDIA = "https://omniverse-content-production.s3-us-west-2.amazonaws.com/Assets/Isaac/4.5"
@@ -54,7 +55,7 @@ def test_without_a_remap_validate_fails_with_one_line_and_no_usd_warnings(cell, 
 
 def test_allowed_missing_layers_are_a_warning_line_then_the_graph_misses_the_robot(cell, capfd):
     with pytest.warns(MissingLayerWarning) as warned:   # the CLI prints each as one "warning:" line
-        assert main(["validate", "--allow-missing-layers", str(cell / "cell.json")]) == 2
+        assert main(["validate", "--allow-missing-assets", str(cell / "cell.json")]) == 2
     assert str(warned[0].message).startswith(f"{cell / 'cell.usda'}: cannot open {UR10_URL}, the reference of /ur10")
     lines = capfd.readouterr().err.splitlines()
     assert lines[0] == (f"{cell / 'cell.json'}: node 'gripper' input 'inputs:endEffectorPrim': no prim "
@@ -79,7 +80,8 @@ def test_the_environment_variable_remaps_too_and_wins_over_the_file(cell, mirror
     monkeypatch.setenv("GRAPHFLOW_ASSET_REMAP", f"{NVIDIA}={mirror}")
     assert main(["validate", str(cell / "cell.json")]) == 0
     monkeypatch.delenv("GRAPHFLOW_ASSET_REMAP")
-    with pytest.raises(Exception, match=r"remapped by graphflow.toml or GRAPHFLOW_ASSET_REMAP: the file is not"):
+    with missing_layers_refused(), pytest.raises(StageError, match=r"remapped by graphflow.toml or "
+                                                                   r"GRAPHFLOW_ASSET_REMAP: the file is not"):
         open_composed(cell / "cell.usda")
 
 

@@ -154,3 +154,11 @@ def test_key_file(tmp_path):
 def test_unknown_key_token_is_rejected_at_load_time():
     with pytest.raises(Exception, match="inputs:keyIn"):
         NodeHarness("omni.graph.action.OnKeyboardInput", inputs={"keyIn": "Shift"})
+
+
+def test_read_keyboard_state_reports_the_key_and_modifiers_held_each_step():
+    harness = NodeHarness("omni.graph.nodes.ReadKeyboardState", inputs={"key": "W"}, time_step=DT)
+    attach_keyboard(harness.world, ScriptedKeys(
+        [a for spec in ("W@0.2-0.4", "RightShift@0.3-0.5") for a in parse_key_spec(spec)]))
+    states = [(r.outputs["isPressed"], r.outputs["shiftOut"]) for r in (harness.tick() for _ in range(6))]
+    assert states == [(False, False), (True, False), (True, True), (False, True), (False, False), (False, False)]

@@ -1,0 +1,123 @@
+"""Parts of an Isaac graph beyond its nodes: graph variables, node versions, several graphs in one file.
+
+* Graph variables: Kit stores each as an attribute ``graph:variable:NAME`` on
+  the OmniGraph prim (its USD type is the variable's type, its value the
+  default; a ``rel`` for a target variable). They become document variables.
+* Versions: a file may name any ``node:typeVersion``. A version graphflow does
+  not implement loads as graphflow's version of the node: the ports that moved
+  between versions (taken from the ``updateNodeVersion`` code of Isaac's
+  nodes) are mapped, a newer version is loaded when its ports fit, and one line
+  says which version was loaded and what was mapped.
+* Several graphs: Kit evaluates every graph of a stage, so a file with several
+  imports them all into one document; node and variable names get the graph
+  prim's name in front so they stay unique.
+"""
+from __future__ import annotations
+
+VARIABLE_PREFIX = "graph:variable:"
+VARIABLE_NODES = ("omni.graph.core.ReadVariable", "omni.graph.core.WriteVariable",
+                  "omni.graph.action.OnVariableChange")
+
+# USD value type name -> graphflow type name (graphflow.types)
+_ROLES = {"vector": "vector", "point": "point", "normal": "normal", "color": "color", "texCoord": ""}
+_SCALARS = ("bool", "int", "int64", "uint", "uint64", "float", "double", "half", "token", "string")
+
+# (node type id, authored version) -> {old port: new port, or None when the port was removed}
+# from Isaac's updateNodeVersion code (isaacsim.ros2.nodes, isaacsim.sensors.physx)
+PORT_CHANGES: dict[tuple[str, int], dict[str, str | None]] = {
+    ("isaacsim.ros2.bridge.ROS2SubscribeJointState", 1): {"inputs:targetPrim": None},
+}
+
+
+def graphflow_type(usd_type: str) -> str | None:
+    """graphflow's name for a USD value type (``double3`` -> ``double[3]``, ``quatd[]`` -> ``quatd[4][]``), or None."""
+    array = usd_type.endswith("[]")
+    base = usd_type[:-2] if array else usd_type
+    suffix = "[]" if array else ""
+    if base in _SCALARS:
+        return base + suffix
+    if base == "asset":
+        return "path" + suffix
+    if base.startswith("quat") and len(base) == 5:
+        return f"{base}[4]{suffix}"
+    if base.startswith("matrix") and base.endswith("d") and base[6:-1].isdigit():
+        size = int(base[6:-1])
+        return f"matrixd[{size * size}]{suffix}"
+    if base[-1].isdigit() and base[:-1] in ("double", "float", "half", "int"):   # double3, int2
+        return f"{base[:-1]}[{base[-1]}]{suffix}"
+    if base[-2:-1].isdigit() and base[-1] in "dfh" and base[:-2] in _ROLES:      # vector3d, point3f, texCoord2f
+        size, letter, role = base[-2], base[-1], _ROLES[base[:-2]]
+        scalar = {"d": "double", "f": "float", "h": "half"}[letter]
+        return f"{role}{letter}[{size}]{suffix}" if role else f"{scalar}[{size}]{suffix}"
+    return None
+
+
+def graph_variables(graph_prim, label: str, value_of, warnings: list[str]) -> list[dict]:
+    """The graph's variables as document entries (name, type, default), one line per variable not brought over."""
+    variables = []
+    for prop in graph_prim.GetProperties():
+        name = prop.GetName()
+        if not name.startswith(VARIABLE_PREFIX):
+            continue
+        short = name[len(VARIABLE_PREFIX):]
+        where = f"{label}: {graph_prim.GetPath()}: graph variable '{short}'"
+        if hasattr(prop, "GetTargets"):
+            targets = [str(path) for path in prop.GetTargets()]
+            variables.append({"name": short, "type": "target", **({"default": targets} if targets else {})})
+            continue
+        type_name = graphflow_type(str(prop.GetTypeName()))
+        if type_name is None:
+            warnings.append(f"{where}: USD type {prop.GetTypeName()} has no graphflow equivalent; dropped")
+            continue
+        entry = {"name": short, "type": type_name}
+        value = value_of(prop)
+        if value is not None:
+            entry["default"] = value
+        variables.append(entry)
+    return variables
+
+
+def map_version(spec, version: int, ports: set[str], where: str, warnings: list[str]) -> dict[str, str | None]:
+    """How the ports of *version* map onto graphflow's node (``{old: new or None}``), with one line saying so.
+
+    *ports* are the node's authored and connected ports (``inputs:x``, ``outputs:y``).
+    """
+    changes = dict(PORT_CHANGES.get((spec.id, version), {}))
+    unknown = sorted(port for port in ports if port not in changes and spec.attribute(port) is None)
+    relation = "newer than" if version > spec.version else "older than"
+    mapped = [f"{old} -> {new}" if new else f"{old} removed" for old, new in sorted(changes.items()) if old in ports]
+    line = f"{where}: typeVersion {version} of {spec.id} is {relation} graphflow's {spec.version}: loaded as version {spec.version}"
+    if mapped:
+        line += f" (mapped: {', '.join(mapped)})"
+    if unknown:
+        line += f"; ports not in version {spec.version}: {', '.join(unknown)} (dropped)"
+    elif version > spec.version:
+        line += " (its ports all exist there)"
+    warnings.append(line)
+    return changes
+
+
+def graph_prefixes(graph_paths: list[str]) -> dict[str, str]:
+    """The name prefix of each graph's nodes and variables: its prim name, or its whole path when names repeat."""
+    names = [path.rsplit("/", 1)[-1] for path in graph_paths]
+    return {path: (name if names.count(name) == 1 else path.strip("/").replace("/", "_")) + "_"
+            for path, name in zip(graph_paths, names)}
+
+
+def prefixed(part: dict, prefix: str) -> dict:
+    """One imported graph's nodes, connections, ui, variables and missing assets with *prefix* on every name."""
+    variables = {v["name"]: prefix + v["name"] for v in part["variables"]}
+    nodes = []
+    for node in part["nodes"]:
+        node = {**node, "name": prefix + node["name"]}
+        inputs = node.get("inputs", {})
+        if node["type"] in VARIABLE_NODES and inputs.get("variableName") in variables:
+            node["inputs"] = {**inputs, "variableName": variables[inputs["variableName"]]}
+        nodes.append(node)
+    return {
+        "nodes": nodes,
+        "connections": [{"src": prefix + c["src"], "dst": prefix + c["dst"]} for c in part["connections"]],
+        "ui": {prefix + name: value for name, value in part["ui"].items()},
+        "variables": [{**v, "name": variables[v["name"]]} for v in part["variables"]],
+        "missingAssets": [{**m, "node": prefix + m["node"]} for m in part["missingAssets"]],
+    }

@@ -1,0 +1,50 @@
+"""Transform trees for the ROS 2 tf nodes: which frames a target prim stands for, and their parents.
+
+Not a node type. An articulation (a prim with joints under it, as Isaac's
+PublishTransformTree expands it) is every rigid-body link below it, each the
+child of the link its joint's body0 names; the link no joint moves hangs off
+the parent frame. Any other prim is one frame. Frame names are prim names.
+The structure is read from the world's USD stage; poses come from the world.
+"""
+from __future__ import annotations
+
+from graphflow.poses import relative
+
+
+def frames(stage, target: str) -> list[tuple[str | None, str]]:
+    """``(parent path or None for the tree's parent frame, child path)`` for every frame *target* stands for."""
+    if stage is None:
+        return [(None, target)]
+    from pxr import UsdPhysics
+
+    root = stage.GetPrimAtPath(target)
+    if not root:
+        return [(None, target)]
+    links, parents = [], {}
+    for prim in _subtree(root):
+        if prim.HasAPI(UsdPhysics.RigidBodyAPI):
+            links.append(str(prim.GetPath()))
+        joint = UsdPhysics.Joint(prim)
+        if joint:
+            body0, body1 = joint.GetBody0Rel().GetTargets(), joint.GetBody1Rel().GetTargets()
+            if body0 and body1:
+                parents[str(body1[0])] = str(body0[0])
+    if not links or not parents:
+        return [(None, target)]
+    return [(parents.get(link) if parents.get(link) in links else None, link) for link in links]
+
+
+def _subtree(prim):
+    yield prim
+    for child in prim.GetChildren():
+        yield from _subtree(child)
+
+
+def frame_name(path: str) -> str:
+    return path.rstrip("/").rsplit("/", 1)[-1] or "World"
+
+
+def transform(world, parent_path: str | None, child_path: str):
+    """The pose of *child_path* in *parent_path*'s frame (the world's when None)."""
+    child = world.prim_pose(child_path)
+    return relative(world.prim_pose(parent_path), child) if parent_path else child

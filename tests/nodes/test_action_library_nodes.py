@@ -1,0 +1,66 @@
+"""omni.graph.action types added from Kit's node library reference, on its own examples."""
+from graphflow.testing import GraphHarness, NodeHarness
+
+
+def _graph(*nodes, connections=()):
+    return {"format": "graphflow", "formatVersion": [1, 0], "nodes": list(nodes),
+            "connections": [{"src": s, "dst": d} for s, d in connections]}
+
+
+def test_countdown_ticks_after_3_6_9_and_finishes_after_the_10th():
+    # the reference's example: duration 10, period 3
+    harness = GraphHarness(_graph(
+        {"name": "start", "type": "omni.graph.action.OnLoaded"},
+        {"name": "countdown", "type": "omni.graph.action.Countdown", "inputs": {"duration": 10, "period": 3}},
+        {"name": "ticks", "type": "omni.graph.action.Counter"},
+        {"name": "done", "type": "omni.graph.action.Counter"},
+        connections=[("start.outputs:execOut", "countdown.inputs:execIn"),
+                     ("countdown.outputs:tick", "ticks.inputs:execIn"),
+                     ("countdown.outputs:finished", "done.inputs:execIn")]))
+    seen = []
+    for _ in range(13):
+        harness.run(1)
+        seen.append((harness.output("ticks", "count"), harness.output("done", "count")))
+    # tick 1 starts it (execution 0); executions 1..10 follow one a tick; the 11th finishes
+    assert [t for t, _ in seen] == [0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3, 3]
+    assert [d for _, d in seen] == [0] * 11 + [1, 1]
+    assert harness.output("countdown", "alpha") == 1.0
+
+
+def test_switch_token_fires_the_matching_branch_only():
+    node = NodeHarness("omni.graph.action.SwitchToken", {"value": "B", "branch0": "A", "branch1": "B", "branch2": "B"})
+    assert node.compute("execIn").fired == {"output1"}
+    node.set_inputs(value="C")
+    assert node.compute("execIn").fired == set()
+
+
+def test_start_play_stage_events_fire_once_on_the_first_tick_and_editor_events_never():
+    start = NodeHarness("omni.graph.action.OnStageEvent", {"eventName": "Simulation Start Play"})
+    assert [start.tick().fired for _ in range(3)] == [{"execOut"}, set(), set()]
+    saved = NodeHarness("omni.graph.action.OnStageEvent", {"eventName": "Saved"})
+    assert [saved.tick().fired for _ in range(3)] == [set(), set(), set()]
+    loaded = NodeHarness("omni.graph.action.OnLoaded")
+    assert [loaded.tick().fired for _ in range(2)] == [{"execOut"}, set()]
+    loaded.reset()
+    assert loaded.tick().fired == {"execOut"}
+
+
+def test_on_variable_change_fires_the_tick_after_a_write_changes_the_value():
+    graph = _graph(
+        {"name": "watch", "type": "omni.graph.action.OnVariableChange", "inputs": {"variableName": "mode"}},
+        {"name": "changes", "type": "omni.graph.action.Counter"},
+        {"name": "tick", "type": "omni.graph.action.OnTick"},
+        {"name": "ticks", "type": "omni.graph.action.Counter"},
+        {"name": "every_third", "type": "omni.graph.nodes.Modulo", "inputs": {"b": 3}},
+        {"name": "write", "type": "omni.graph.core.WriteVariable", "inputs": {"variableName": "mode"}},
+        connections=[("watch.outputs:changed", "changes.inputs:execIn"), ("tick.outputs:tick", "ticks.inputs:execIn"),
+                     ("ticks.outputs:count", "every_third.inputs:a"), ("ticks.outputs:execOut", "write.inputs:execIn"),
+                     ("every_third.outputs:result", "write.inputs:value")])
+    graph["variables"] = [{"name": "mode", "type": "int64", "default": 0}]
+    harness = GraphHarness(graph)
+    counts = []
+    for _ in range(7):
+        harness.run(1)
+        counts.append(harness.output("changes", "count"))
+    # mode after each tick: 1, 2, 0, 1, 2, 0, 1 (count % 3); a change shows on the next tick
+    assert counts == [0, 1, 2, 3, 4, 5, 6]
