@@ -13,7 +13,7 @@ import copy
 import os
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Iterator, Mapping
+from typing import TYPE_CHECKING, Any, Iterator, Mapping, TypeVar, overload
 
 from graphflow.document import GraphDocument, dumps, load_document, parse_document, save_document
 from graphflow.model import FORMAT_NAME, FORMAT_VERSION, GraphError, Problem
@@ -21,6 +21,7 @@ from graphflow.registry import Registry, default_registry
 from graphflow.spec import Attribute, NodeSpec
 
 SCHEMA_REFERENCE = "graphflow.schema.json"   # what new graphs' "$schema" names (`graphflow schema -o` writes it)
+Handle = TypeVar("Handle", bound="NodeHandle")
 
 
 @dataclass(frozen=True)
@@ -37,13 +38,17 @@ class Port:
 
 
 class Ports:
-    """A node's inputs or outputs as attributes (``tick.outputs.tick``); ``dir()`` lists them for completion."""
+    """A node's inputs or outputs as attributes (``tick.outputs.tick``); ``dir()`` lists them for completion.
+
+    Type checkers see no ``__getattr__``: the typed handles ``graphflow schema --python`` writes declare
+    each port, so a misspelled one is flagged before anything runs.
+    """
 
     def __init__(self, node: str, group: str, attributes: tuple[Attribute, ...]):
         self._node, self._group = node, group
         self._attributes = {attribute.name: attribute for attribute in attributes}
 
-    def __getattr__(self, name: str) -> Port:
+    def port(self, name: str) -> Port:
         attributes = self.__dict__.get("_attributes", {})
         if name not in attributes:
             raise AttributeError(f"node '{self._node}' has no {self._group[:-1]} '{name}' "
@@ -51,18 +56,26 @@ class Ports:
         attribute = attributes[name]
         return Port(self._node, f"{self._group}:{name}", attribute.type, attribute.description)
 
+    if not TYPE_CHECKING:
+        def __getattr__(self, name: str) -> Port:
+            return self.port(name)
+
     def __getitem__(self, name: str) -> Port:
-        return getattr(self, name)
+        return self.port(name)
 
     def __dir__(self) -> list[str]:
         return sorted(self._attributes)
 
     def __iter__(self) -> Iterator[Port]:
-        return (getattr(self, name) for name in self._attributes)
+        return (self.port(name) for name in self._attributes)
 
 
 class NodeHandle:
     """A node of a ``Graph``: its ``inputs`` and ``outputs`` as ``Port`` attributes, and ``set(**values)``."""
+
+    TYPE_ID = ""   # typed handle classes (graphflow schema --python) name their node type
+    inputs: Any    # Ports; the typed handles declare theirs port by port
+    outputs: Any
 
     def __init__(self, graph: "Graph", name: str, spec: NodeSpec):
         self.graph, self.name, self.spec = graph, name, spec
@@ -127,15 +140,24 @@ class Graph:
 
     # ------------------------------------------------------------------ nodes
 
-    def node(self, name: str, type_id: str, /, **inputs: Any) -> NodeHandle:
-        """Create node *name* of type *type_id* (Isaac's legacy ids load too) with input values."""
+    @overload
+    def node(self, name: str, node_type: type[Handle], /, **inputs: Any) -> Handle: ...
+
+    @overload
+    def node(self, name: str, node_type: str, /, **inputs: Any) -> NodeHandle: ...
+
+    def node(self, name, node_type, /, **inputs):
+        """Create node *name* of a type id (Isaac's legacy ids load too) or a typed handle class
+        (``graphflow schema --python``), with input values; returns its handle."""
+        handle_class = node_type if isinstance(node_type, type) else NodeHandle
+        type_id = node_type.TYPE_ID if isinstance(node_type, type) else node_type
         entry: dict[str, Any] = {"name": name, "type": type_id}
         if inputs:
             entry["inputs"] = {key: plain(value) for key, value in inputs.items()}
         if self._find(name) is not None:
             self._refuse(f"a node named '{name}' already exists", node=name)
         self._change(lambda data: data["nodes"].append(entry))
-        return self[name]
+        return handle_class(self, name, self.registry.get(type_id).spec)
 
     def __getitem__(self, name: str) -> NodeHandle:
         """The handle of an existing node."""

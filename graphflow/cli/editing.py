@@ -13,6 +13,8 @@ def register(commands) -> None:
     schema = commands.add_parser(
         "schema", help="write the JSON Schema of graph files with every registered node type and its inputs")
     schema.add_argument("-o", "--output", metavar="FILE", help="write it to FILE atomically (default: stdout)")
+    schema.add_argument("--python", action="store_true",
+                        help="write typed node handles for graphflow.build instead (a Python module for editors)")
     schema.add_argument("--force", action="store_true", help="overwrite an existing FILE")
     schema.set_defaults(handler=command_schema)
 
@@ -30,6 +32,15 @@ def command_schema(args) -> int:
 
     from graphflow.catalog.schema import graph_schema, write_schema
 
+    if args.python:
+        from graphflow.catalog.typed_handles import python_module, write_python_module
+
+        if args.output:
+            write_python_module(args.output, force=args.force)
+            print(f"wrote {args.output}")
+        else:
+            sys.stdout.write(python_module())
+        return EXIT_OK
     if args.output:
         write_schema(args.output, force=args.force)
         print(f"wrote {args.output}")
