@@ -154,10 +154,8 @@ def rebased(document: GraphDocument, path: str | os.PathLike) -> GraphDocument:
     stage = document.settings.get("stage")
     if not isinstance(stage, str) or stage.startswith(("asset:", "@")) or Path(stage).is_absolute():
         return document
-    from graphflow.usd.asset_roots import root_file
-
-    if not (document.base_dir / stage).exists() and root_file(stage) is not None:
-        return document   # graphflow/ur10.usda: a packaged asset, found from any folder
+    if not (document.base_dir / stage).exists():
+        return document   # names no file here: an asset root's (graphflow/ur10.usda, found from any folder) or none
     folder = Path(path).resolve().parent
     if folder == document.base_dir:
         return document
