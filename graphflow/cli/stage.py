@@ -93,6 +93,8 @@ def print_stage_report(report: dict, simulation: dict | None) -> None:
     for articulation in report["articulations"]:
         print(f"  {articulation['path']}: {len(articulation['bodies'])} bodies, movable joints "
               + (", ".join(articulation["movable_joints"]) or "none"))
+        if articulation["undriven_joints"]:
+            print("    without a drive (free): " + ", ".join(articulation["undriven_joints"]))
     print(f"surface grippers: {len(report['surface_grippers'])}")
     for gripper in report["surface_grippers"]:
         print(f"  {gripper['path']}: {len(gripper['attachment_points'])} attachment points")
@@ -101,9 +103,15 @@ def print_stage_report(report: dict, simulation: dict | None) -> None:
     print(f"unsupported prims: {len(report['unsupported'])}")
     for item in report["unsupported"]:
         print(f"  {item['path']}: {item['reason']}")
+    print(f"ignored (other simulators' authoring): {len(report['ignored'])}")
+    for item in report["ignored"]:
+        print(f"  {item['path']}: {item['what']}")
     if simulation is not None:
         worst = simulation["max_displacement"]
-        print(f"simulated {simulation['seconds']:g} s ({simulation['steps']} steps), drives at their targets")
+        free = sum(len(articulation["undriven_joints"]) for articulation in report["articulations"])
+        held = ("no drives: every joint free" if not simulation["drive_errors"] else "drives at their targets"
+                + (f"; {free} joints without a drive free" if free else ""))
+        print(f"simulated {simulation['seconds']:g} s ({simulation['steps']} steps), {held}")
         if worst["path"] is not None:
             print(f"  largest displacement of a free body: {worst['path']} moved {worst['distance'] * 1000:.2f} mm")
         for path, distance in simulation["displacements"].items():

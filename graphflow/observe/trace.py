@@ -10,7 +10,6 @@ behaviour does. Nothing depends on the wall clock and floats are written by
 from __future__ import annotations
 
 import json
-import math
 import os
 import platform
 import sys
@@ -128,13 +127,9 @@ def initial_grippers(world) -> list[str]:
 
 
 def _holding_force(manager, path: str) -> float | None:
-    """Magnitude of the largest force an attachment constraint of this gripper carries (N)."""
+    """The largest force an attachment of this gripper carries, as its break limits see it (N)."""
     component = manager.component(path)
-    attachments = manager.attachments
-    magnitudes = []
-    for handle in component.handles.values():
-        force = attachments.force_on_gripper(handle)
-        magnitudes.append(math.sqrt(sum(float(f) * float(f) for f in force)))
+    magnitudes = [float(component.checked_force(handle)) for handle in component.handles.values()]
     return max(magnitudes) if magnitudes else None
 
 

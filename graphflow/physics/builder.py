@@ -29,11 +29,14 @@ Mapping (documented in ``graphflow.physics``):
 """
 from __future__ import annotations
 
+import hashlib
 import math
 import os
 from dataclasses import dataclass, field, replace
 
-from graphflow.physics.contacts import anchor_friction, plane_box
+import pybullet
+
+from graphflow.physics.contacts import ROLLING_SHAPES, anchor_friction, plane_box
 from graphflow.poses import (
     AXIS_VECTORS,
     IDENTITY_POSE,
@@ -44,6 +47,7 @@ from graphflow.poses import (
     quat_multiply,
 )
 from graphflow.usd.description import Body, Joint, Shape, StageDescription
+from graphflow.usd.errors import StageError
 from graphflow.usd.physics_import import joint_frame_offset
 
 CONE_SEGMENTS = 24                 # a cone collider is the convex hull of this many base points and its apex
@@ -198,15 +202,21 @@ class SceneBuilder:
             orientations.append(list(pose[1]))
         if not kinds:
             return -1
-        return p.createCollisionShapeArray(shapeTypes=kinds, radii=radii, halfExtents=half_extents, lengths=lengths,
-                                           fileNames=files, meshScales=[[1.0, 1.0, 1.0]] * len(kinds),
-                                           collisionFramePositions=positions,
-                                           collisionFrameOrientations=orientations)
+        try:
+            return p.createCollisionShapeArray(shapeTypes=kinds, radii=radii, halfExtents=half_extents,
+                                               lengths=lengths, fileNames=files,
+                                               meshScales=[[1.0, 1.0, 1.0]] * len(kinds),
+                                               collisionFramePositions=positions,
+                                               collisionFrameOrientations=orientations)
+        except pybullet.error:    # e.g. a hull of two points: PyBullet says only "createCollisionShapeArray failed"
+            raise StageError(f"{self.description.source}: collider {', '.join(s.path for s in shapes)}: PyBullet "
+                             "cannot make a collision shape of it (a hull needs 3 points not on a line)") from None
 
     def _hull_file(self, shape: Shape) -> str:
-        """PyBullet's compound shapes take meshes only from files: write the hull points as an OBJ once."""
+        """PyBullet's compound shapes take meshes only from files: write the hull points as an OBJ once, named by
+        a hash of the prim path (the path itself overran the 255-byte file-name limit on deep converted robots)."""
         points = shape.points if shape.kind == "convex_mesh" else _cone_points(shape)
-        name = shape.path.strip("/").replace("/", "__") + ".obj"
+        name = "hull-" + hashlib.sha256(shape.path.encode()).hexdigest()[:24] + ".obj"
         file_path = os.path.join(self.mesh_directory, name)
         if not os.path.exists(file_path):
             with open(file_path, "w", encoding="ascii") as obj:
@@ -216,7 +226,7 @@ class SceneBuilder:
         return file_path
 
     # -- bodies ----------------------------------------------------------------------
-    def _apply_dynamics(self, body_id: int, link: int, body: Body):
+    def _apply_dynamics(self, body_id: int, link: int, body: Body, turns: bool = False):
         p = self.p
         friction = body.shapes[0].material.static_friction if body.shapes else 0.5
         restitution = body.shapes[0].material.restitution if body.shapes else 0.0
@@ -225,8 +235,8 @@ class SceneBuilder:
                          linearDamping=body.linear_damping, angularDamping=body.angular_damping)
         if body.mass is not None and body.kind == "dynamic":
             p.changeDynamics(body_id, link, localInertiaDiagonal=list(body.mass.diagonal_inertia))
-        if body.kind == "dynamic":
-            anchor_friction(p, body_id, link)
+        if body.kind == "dynamic" and not (turns or any(shape.kind in ROLLING_SHAPES for shape in body.shapes)):
+            anchor_friction(p, body_id, link)     # not on what rolls (see contacts.anchor_friction)
 
     def _register(self, body: Body, body_id: int, link: int, inertial_in_prim: Pose, articulation: str | None,
                   mass: float):
@@ -411,10 +421,10 @@ class SceneBuilder:
             if not tree.fixed_base:
                 self.p.resetBaseVelocity(body_id, root.linear_velocity, root.angular_velocity)
         arrays = links.arrays
-        for child, _joint, _parent, _is_body1 in tree.order:
+        for child, joint, _parent, _is_body1 in tree.order:
             body = self.description.bodies[child]
             index = links.link_index[child]
-            self._apply_dynamics(body_id, index, body)
+            self._apply_dynamics(body_id, index, body, turns=joint.kind == "revolute")
             inertial_in_prim = compose(invert(links.link_from_prim[child]),
                                        (tuple(arrays["inertial_positions"][index]),
                                         tuple(arrays["inertial_orientations"][index])))

@@ -93,7 +93,11 @@ class PyBulletWorld(SceneLookups):
         self.attachments = WorldAttachments(self)
         self.unsupported: list[tuple[str, str]] = list(description.unsupported)
         self._closed = False
-        self._build()
+        try:
+            self._build()
+        except BaseException:      # a stage the build refuses: no client or mesh folder left behind
+            self.close()
+            raise
 
     # -- construction and timeline ------------------------------------------------------------
     def _build(self):

@@ -155,6 +155,7 @@ class StageDescription:
     articulations: list[Articulation] = field(default_factory=list)
     surface_grippers: list[SurfaceGripper] = field(default_factory=list)
     unsupported: list[tuple[str, str]] = field(default_factory=list)   # (path, reason)
+    ignored: list[tuple[str, str]] = field(default_factory=list)       # (path, what): other simulators' authoring
 
     @property
     def attachment_joints(self) -> dict[str, Joint]:

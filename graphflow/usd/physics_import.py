@@ -32,6 +32,13 @@ from graphflow.poses import (
     relative,
     twist_angle,
 )
+from graphflow.usd.authored_values import (
+    inertia_on_triangle,
+    joint_problems,
+    mass_problems,
+    round_collider_problems,
+    unit_mismatches,
+)
 from graphflow.usd.description import (
     Articulation,
     AxisLimit,
@@ -45,9 +52,14 @@ from graphflow.usd.description import (
     SurfaceGripper,
 )
 from graphflow.usd.errors import StageError, warn_unsupported
+from graphflow.usd.ignored import ignored_authoring
 
 DEFAULT_GRAVITY = 9.81                 # m/s^2, along minus the up axis
 IN_MEMORY = "<in-memory stage>"
+# A body with neither mass nor colliders is a frame (a converted MJCF site, a tool point): MuJoCo gives it no
+# mass; PyBullet needs some, so 1 g on a 1 cm sphere (2/5 m r^2), not the 1 kg that sagged converted arms
+FRAME_BODY_MASS = 1.0e-3               # kg
+FRAME_BODY_INERTIA = 0.4 * FRAME_BODY_MASS * 0.01 ** 2    # kg m^2
 
 
 def open_stage(stage_or_path):
@@ -194,15 +206,21 @@ class _Importer:
         self._surface_grippers()
         self._solver_iterations(parsed.get(kinds.Scene))
         self._unsimulated_sleep()
+        self.description.ignored = ignored_authoring(self.stage)
+        for layer, reason in unit_mismatches(self.stage):
+            self._unsupported(layer, reason)
         return self._in_path_order(self.description)
 
     def _prim_problems(self) -> list[str]:
-        """What no simulation can take, every one: negative or non-finite masses, collider boxes and
+        """What no simulation can take, every one: negative or non-finite masses, the inertias, centres of
+        mass, joint frames, drive values and limits ``authored_values`` refuses, collider boxes and
         spheres of zero or non-finite size, bodies and colliders with non-finite transforms."""
         from pxr import Usd, UsdGeom, UsdPhysics
 
         problems = []
         for prim in Usd.PrimRange(self.stage.GetPseudoRoot()):
+            if prim.IsA(UsdPhysics.Joint):
+                problems.extend(joint_problems(prim, f"{self.label}: joint {prim.GetPath()}"))
             is_body, is_collider = prim.HasAPI(UsdPhysics.RigidBodyAPI), prim.HasAPI(UsdPhysics.CollisionAPI)
             if not (is_body or is_collider):
                 continue
@@ -214,8 +232,11 @@ class _Importer:
             mass = self._attribute(prim, "physics:mass") if prim.HasAPI(UsdPhysics.MassAPI) else None
             if mass is not None and not (math.isfinite(mass) and mass >= 0):
                 problems.append(f"{where}: physics:mass is {mass!r}; a mass must be a finite number >= 0")
+            if prim.HasAPI(UsdPhysics.MassAPI):
+                problems.extend(mass_problems(prim, where))
             if not is_collider:
                 continue
+            problems.extend(round_collider_problems(prim, where))
             if prim.IsA(UsdGeom.Cube):
                 size = UsdGeom.Cube(prim).GetSizeAttr().Get()
                 if size is None or not (math.isfinite(size) and size > 0) or matrix.GetDeterminant3() == 0:
@@ -412,8 +433,9 @@ class _Importer:
             has_axes = authored is not None and (authored.GetReal() != 0 or any(authored.GetImaginary()))
             principal_axes = _quat(authored) if has_axes else (0.0, 0.0, 0.0, 1.0)
         if mass <= 0.0:
-            self._unsupported(str(prim.GetPath()), "a rigid body without mass or colliders (given 1 kg)")
-            mass, diagonal = 1.0, (1e-3, 1e-3, 1e-3)
+            self._unsupported(str(prim.GetPath()), "a rigid body without mass or colliders (a frame or a site): "
+                              f"given {FRAME_BODY_MASS * 1000:g} g, a 1 cm sphere's inertia")
+            mass, diagonal = FRAME_BODY_MASS, (FRAME_BODY_INERTIA,) * 3
         elif not any(shape.collision_enabled for shape in body.shapes) and not (
                 prim.HasAPI(UsdPhysics.MassAPI) and mass_api.GetDiagonalInertiaAttr().HasAuthoredValue()):
             # usd-core found no collider to integrate: it warns "possibly invalid inertia tensor of
@@ -421,6 +443,11 @@ class _Importer:
             # changed from run to run, and so did the simulation). Use the body's own geometry instead.
             diagonal, principal_axes = _geometry_inertia(self._fallback_shapes(prim, body), mass,
                                                          self._vec(center), diagonal)
+        diagonal, refused, rounded = inertia_on_triangle(diagonal)
+        if refused:
+            self._fail(f"body {prim.GetPath()}: {refused}")
+        if rounded:
+            self._unsupported(str(prim.GetPath()), rounded)
         return MassProperties(mass=mass, center_of_mass=self._vec(center), diagonal_inertia=diagonal,
                               principal_axes=principal_axes)
 

@@ -147,13 +147,6 @@ def rerun_command(path: str) -> str:
     return shlex.join(("graphflow", "run", path))
 
 
-def preflight_problems(document: GraphDocument) -> list[str]:
-    """What ``graphflow validate`` would refuse in an already loaded document, one line each."""
-    from graphflow.validate.preflight import document_problems
-
-    return [str(problem) for problem in document_problems(document)]
-
-
 class CheckedRun:
     """One run of a graph, checked: preflight, world, inputs, listeners, ticks, verdict.
 
@@ -179,23 +172,32 @@ class CheckedRun:
         self.listeners = list(listeners)
         self.simulation = simulation
         self._attached = simulation is not None
+        self._parsed: Any = None   # the preflight's parsed stage (validate.preflight.ParsedStage)
         self.verdict = Verdict(self.source, len(self.evaluator),
                                expect_failure=tuple(self.document.scenario.get("expectFailure", ())))
 
     def preflight(self) -> None:
-        """Refuse what ``validate`` refuses, before anything is built: ``BadInput`` with every problem."""
-        problems = preflight_problems(self.document)
+        """Refuse what ``validate`` refuses, before anything is built: ``BadInput`` with every problem.
+
+        The stage it parses is kept for this run's world, so a run reads (and USD warns about) its stage once.
+        """
+        from graphflow.validate.preflight import document_problems
+
+        problems, self._parsed = document_problems(self.document, quiet=False)
         if problems:
-            raise BadInput("\n".join(problems))
+            raise BadInput("\n".join(str(problem) for problem in problems))
 
     def start(self):
         """Seed, build the world (the one factory), attach inputs and listeners; returns the simulation."""
-        from graphflow.runtime import Simulation
+        from graphflow.runtime import Simulation, create_world_for
 
         seed_everything(self.seed)
         if self._attached:
             return self.simulation
-        world = self.variant.create_world(gui=self.gui) if self.variant is not None else None
+        if self.variant is not None and self.variant.stage_edits:
+            world = self.variant.create_world(gui=self.gui)
+        else:
+            world = create_world_for(self.document, gui=self.gui, parsed=self._parsed)
         self.simulation = Simulation(self.document, world=world, gui=self.gui)
         self.inputs.attach(self.simulation.world)
         for listener in (*self.listeners, self.evaluator):
