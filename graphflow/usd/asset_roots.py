@@ -73,7 +73,7 @@ def root_file(asset: str) -> Path | None:
 def search_folder() -> Path:
     """A folder of links, one per root (removed when the process ends): the search path USD is given."""
     folder = Path(tempfile.mkdtemp(prefix="graphflow-asset-roots-"))
-    atexit.register(shutil.rmtree, folder, ignore_errors=True)
+    atexit.register(_remove, folder, os.getpid())
     for name, root in asset_roots().items():
         try:
             (folder / name).symlink_to(root, target_is_directory=True)
@@ -81,6 +81,12 @@ def search_folder() -> Path:
             log.debug("asset root %s copied, not linked: %s", name, error)
             shutil.copytree(root, folder / name)
     return folder
+
+
+def _remove(folder: Path, owner: int) -> None:
+    """Remove the links' folder at exit, in the process that made it only (a forked worker shares it)."""
+    if os.getpid() == owner:
+        shutil.rmtree(folder, ignore_errors=True)
 
 
 @lru_cache(maxsize=1)

@@ -112,3 +112,36 @@ def test_a_corpus_file_whose_robot_is_an_nvidia_url_runs_from_a_local_copy(tmp_p
     assert main(["validate", str(graph)]) == 0
     assert main(["run", str(graph), "--ticks", "120"]) == 0
     assert json.loads(graph.read_text())["settings"]["stage"].endswith("test_action_graph1.usda")
+
+
+def test_the_longest_prefix_wins_and_omniverse_urls_map_too(tmp_path, monkeypatch):
+    from graphflow.usd.remap import remap_table
+
+    monkeypatch.setenv("GRAPHFLOW_ASSET_REMAP", f"omniverse://localhost/NVIDIA/Assets={tmp_path / 'all'};"
+                                                f"omniverse://localhost/NVIDIA/Assets/Isaac/4.5={tmp_path / 'isaac'}")
+    table = remap_table(tmp_path)
+    assert table.apply("omniverse://localhost/NVIDIA/Assets/Isaac/4.5/Isaac/Robots/ur10.usd") == \
+        str(tmp_path / "isaac" / "Isaac" / "Robots" / "ur10.usd")
+    assert table.apply("omniverse://localhost/NVIDIA/Assets/Skies/sky.hdr") == str(tmp_path / "all" / "Skies" / "sky.hdr")
+    assert table.apply("https://example.com/x.usd") is None
+    monkeypatch.setenv("GRAPHFLOW_ASSET_REMAP", "omniverse://localhost/NVIDIA")
+    with pytest.raises(StageError, match="GRAPHFLOW_ASSET_REMAP: 'omniverse://localhost/NVIDIA' is not PREFIX=FOLDER"):
+        remap_table(tmp_path)
+
+
+def test_a_sublayer_by_url_is_remapped_and_the_relative_paths_beside_it_still_resolve(tmp_path, mirror, monkeypatch):
+    environment = mirror / "Isaac" / "Environments" / "floor.usda"
+    environment.parent.mkdir(parents=True)
+    environment.write_text('#usda 1.0\ndef Xform "World"\n{\n    def Cube "Floor"\n    {\n    }\n}\n')
+    project = tmp_path / "cell"
+    (project / "parts").mkdir(parents=True)
+    (project / "parts" / "arm.usda").write_text(f'#usda 1.0\n(\n    defaultPrim = "ur10"\n)\n'
+                                                f'def Xform "ur10" (prepend references = @{UR10_URL}@) {{}}\n')
+    (project / "cell.usda").write_text(f'#usda 1.0\n(\n    subLayers = [@{NVIDIA}/Isaac/Environments/floor.usda@]\n)\n'
+                                       'over "World"\n{\n    def Xform "arm" (prepend references = @./parts/arm.usda@)\n'
+                                       '    {\n    }\n}\n')
+    monkeypatch.setenv("GRAPHFLOW_ASSET_REMAP", f"{NVIDIA}={mirror}")
+    with missing_layers_refused():
+        stage = open_composed(project / "cell.usda")
+    assert stage.GetPrimAtPath("/World/Floor").IsValid()
+    assert stage.GetPrimAtPath("/World/arm/ee_link/SurfaceGripper").IsValid()
