@@ -1,8 +1,7 @@
 """Editor support: the generated JSON Schema knows every node type's inputs and agrees with the compiler;
-graph files carry "$schema"; older typeVersions are migrated on load (one line) and by graphflow migrate."""
+graph files carry "$schema" and graphflow new writes the schema they name."""
 import json
 import types
-import warnings
 
 import jsonschema
 import pytest
@@ -10,8 +9,7 @@ from conftest import GRAPHS
 
 from graphflow.catalog.schema import graph_schema
 from graphflow.cli import main
-from graphflow.document import load_document, parse_document
-from graphflow.migration import MigrationWarning
+from graphflow.document import parse_document
 from graphflow.model import GraphError
 from graphflow.registry import Registry, default_registry
 from graphflow.spec import Attribute, NodeSpec
@@ -92,32 +90,3 @@ def test_graphflow_new_writes_the_schema_its_graph_names(tmp_path, monkeypatch, 
     assert main(["schema", "-o", "graphflow.schema.json"]) == 2   # never overwritten without --force
     assert main(["schema", "-o", "graphflow.schema.json", "--force"]) == 0
 
-
-OLD_READ = {"name": "read", "type": "omni.graph.nodes.ReadPrimAttribute", "typeVersion": 1,
-            "inputs": {"name": "physics:mass", "prim": "/World/Cube"}}
-
-
-def test_an_older_type_version_is_migrated_on_load_with_one_line(tmp_path):
-    path = tmp_path / "old.json"
-    path.write_text(json.dumps(graph(OLD_READ)))
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        document = load_document(path)
-    lines = [str(w.message) for w in caught if issubclass(w.category, MigrationWarning)]
-    assert lines == [f"{path}: node 'read': omni.graph.nodes.ReadPrimAttribute typeVersion 1 -> 3 (version 3 "
-                     "reads the inputs version 1 authored; only the typeVersion changes)"]
-    assert document.node("read").type_version == 3
-    assert document.node("read").inputs == OLD_READ["inputs"]
-
-
-def test_graphflow_migrate_rewrites_the_file_once(tmp_path, capsys):
-    path = tmp_path / "old.json"
-    path.write_text(json.dumps(graph(OLD_READ)))
-    assert main(["migrate", str(path)]) == 0
-    assert "typeVersion 1 -> 3" in capsys.readouterr().out
-    assert json.loads(path.read_text())["nodes"][0]["typeVersion"] == 3
-    assert main(["migrate", str(path)]) == 0
-    assert "nothing to migrate" in capsys.readouterr().out
-    path.write_text(json.dumps(graph({**OLD_READ, "typeVersion": 9})))
-    assert main(["migrate", str(path)]) == 2
-    assert "node 'read': typeVersion 9 of omni.graph.nodes.ReadPrimAttribute is not supported" in capsys.readouterr().err
