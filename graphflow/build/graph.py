@@ -48,7 +48,7 @@ class Ports:
         self._node, self._group = node, group
         self._attributes = {attribute.name: attribute for attribute in attributes}
 
-    def port(self, name: str) -> Port:
+    def _lookup(self, name: str) -> Port:
         attributes = self.__dict__.get("_attributes", {})
         if name not in attributes:
             raise AttributeError(f"node '{self._node}' has no {self._group[:-1]} '{name}' "
@@ -58,16 +58,16 @@ class Ports:
 
     if not TYPE_CHECKING:
         def __getattr__(self, name: str) -> Port:
-            return self.port(name)
+            return self._lookup(name)
 
     def __getitem__(self, name: str) -> Port:
-        return self.port(name)
+        return self._lookup(name)
 
     def __dir__(self) -> list[str]:
         return sorted(self._attributes)
 
     def __iter__(self) -> Iterator[Port]:
-        return (self.port(name) for name in self._attributes)
+        return (self._lookup(name) for name in self._attributes)
 
 
 class NodeHandle:
