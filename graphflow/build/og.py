@@ -91,8 +91,50 @@ class Controller:
         lookup = {node.name: node for node in created}
         return graph, created, [], lookup
 
+    @classmethod
+    def attribute(cls, path: Any, node: Any = None) -> str:
+        """``og.Controller.attribute("/ActionGraph/node.inputs:x")`` or ``("inputs:x", node)``: the port's full path."""
+        if node is not None:
+            path = (path, node)
+        if not isinstance(path, tuple):
+            return str(path)
+        attribute, owner = path
+        if isinstance(owner, NodeHandle):
+            graph_path = next((p for p, graph in _graphs.items() if graph is owner.graph), "")
+            return f"{graph_path}/{owner.name}.{attribute}"
+        return f"{owner}.{attribute}"   # the node given by its path, "/ActionGraph/node"
+
+    @classmethod
+    def set(cls, attribute: Any, value: Any, **_options) -> None:
+        """``og.Controller.set(attribute, value)``: author an input of a graph an earlier edit made."""
+        graph, port = _graph_and_port(attribute)
+        graph.set(port, value)
+
+    @classmethod
+    def connect(cls, src: Any, dst: Any, **_options) -> None:
+        graph, source = _graph_and_port(src)
+        graph.connect(source, _graph_and_port(dst)[1])
+
+    @classmethod
+    def disconnect(cls, src: Any, dst: Any, **_options) -> None:
+        graph, source = _graph_and_port(src)
+        graph.disconnect(source, _graph_and_port(dst)[1])
+
 
 GraphController = Controller
+
+
+def _graph_and_port(attribute: Any) -> tuple[Graph, str | Port]:
+    """The graph a full attribute path ("/ActionGraph/node.inputs:x") belongs to (the longest graph path first)."""
+    text = _port(attribute)
+    if isinstance(text, Port):
+        matches = [graph for graph in _graphs.values() if graph.document.node(text.node) is not None]
+    else:
+        matches = [_graphs[path] for path in sorted(_graphs, key=len, reverse=True) if text.startswith(path + "/")]
+    if not matches:
+        raise BadInput(f"og.Controller: {text}: no graph made by og.Controller.edit holds it "
+                       f"(graphs: {', '.join(sorted(_graphs)) or 'none'})")
+    return matches[0], text
 
 
 def _graph_of(graph_id: Any) -> Graph:

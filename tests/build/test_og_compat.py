@@ -92,3 +92,22 @@ def test_edit_refuses_what_it_cannot_build_with_one_line():
     with pytest.raises(GraphError, match="node 'write' input 'inputs:prim'|node 'write'.*no input 'primm'"):
         og.Controller.edit(path, {keys.CREATE_NODES: [("write", "omni.graph.nodes.WritePrimAttribute")],
                                   keys.SET_VALUES: [("write.inputs:primm", "/World/Cube")]})
+
+
+def test_controller_set_connect_and_attribute_address_ports_by_their_full_path():
+    keys, path = og.Controller.Keys, next(_paths)
+    _, (tick, text, show), _, _ = og.Controller.edit(path, {keys.CREATE_NODES: [
+        ("tick", "omni.graph.action.OnTick"), ("text", "graphflow.FormatText"), ("show", "omni.graph.ui_nodes.PrintText")]})
+    og.Controller.set(og.Controller.attribute(f"{path}/text.inputs:format"), "t = {value}")
+    og.Controller.set(og.Controller.attribute("inputs:value", text), 2.5)
+    og.Controller.connect(f"{path}/tick.outputs:tick", f"{path}/show.inputs:execIn")
+    og.Controller.connect(og.Controller.attribute(("outputs:text", text)), f"{path}/show.inputs:text")
+    graph = og.get_graph_by_path(path)
+    assert graph.document.node("text").inputs == {"format": "t = {value}", "value": 2.5}
+    assert [c.src for c in graph.document.connections] == ["tick.outputs:tick", "text.outputs:text"]
+    og.Controller.disconnect(f"{path}/tick.outputs:tick", f"{path}/show.inputs:execIn")
+    assert len(graph.document.connections) == 1
+    with pytest.raises(BadInput, match="/Nowhere/x.inputs:a: no graph made by og.Controller.edit holds it"):
+        og.Controller.set("/Nowhere/x.inputs:a", 1)
+    with pytest.raises(GraphError, match="node 'text' input 'inputs:formatt'"):
+        og.Controller.set(f"{path}/text.inputs:formatt", "x")
