@@ -47,17 +47,19 @@ def open_composed(path: str | os.PathLike):
     from pxr import Usd
 
     from graphflow.usd.asset_roots import install_search_path
-    from graphflow.usd.remap import RemappedLayers, remap_table
+    from graphflow.usd.downloads import download_cache
+    from graphflow.usd.remap import RemappedLayers, project_folder_setting, remap_table
 
     install_search_path()
     label = str(path)
     table = remap_table(Path(path).parent)
-    layers = RemappedLayers(table)
+    cache = download_cache(Path(path).parent, project_folder_setting)
+    layers = RemappedLayers(table, cache)
     with native_stderr_captured():
-        root = layers.root(str(path)) if table else None
+        root = layers.root(str(path)) if table or cache is not None else None
         stage = Usd.Stage.Open(root) if root is not None else Usd.Stage.Open(str(path))
         errors = [str(error) for error in stage.GetCompositionErrors()] if stage is not None else []
-    lines = missing_layer_lines(label, errors, table)
+    lines = missing_layer_lines(label, errors, table, cache.failures if cache is not None else {})
     if lines and _refused.get() and os.environ.get(ALLOW_VARIABLE, "") in ("", "0"):
         raise StageError(*lines)
     for line in lines:
@@ -65,7 +67,7 @@ def open_composed(path: str | os.PathLike):
     return stage
 
 
-def missing_layer_lines(label: str, messages: list[str], table) -> list[str]:
+def missing_layer_lines(label: str, messages: list[str], table, failures: dict | None = None) -> list[str]:
     """One line per asset that cannot be opened: the layer naming it, the asset, and the prims left without it."""
     from pxr import Sdf
 
@@ -89,11 +91,13 @@ def missing_layer_lines(label: str, messages: list[str], table) -> list[str]:
             shown = ", ".join(dict.fromkeys(prims))
             what = (f"the {arc} of {shown} in layer {layer}: prims lost: everything that {arc} puts "
                     f"below {shown}")
-        lines.append(f"{label}: cannot open {asset}, {what}{_hint(asset, table)}")
+        lines.append(f"{label}: cannot open {asset}, {what}{_hint(asset, table, failures or {})}")
     return lines
 
 
-def _hint(asset: str, table) -> str:
+def _hint(asset: str, table, failures: dict) -> str:
+    if asset in failures:
+        return f" (download failed: {failures[asset]})"
     if "://" in asset and table.apply(asset) is None:
         return " (map its URL prefix to a local folder in graphflow.toml [assets.remap] or GRAPHFLOW_ASSET_REMAP)"
     if any(asset.startswith(folder) for _, folder in table.entries):

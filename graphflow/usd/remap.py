@@ -1,4 +1,4 @@
-"""Isaac asset URLs opened from a local folder: a remap table applied when a stage is opened.
+"""Isaac asset URLs opened from a local folder: a remap table (and a download cache) applied when a stage is opened.
 
 Isaac-authored stages name NVIDIA's assets by URL (``https://omniverse-content-production...``,
 ``omniverse://...``). The table maps URL prefixes to local folders; it comes from the nearest
@@ -11,7 +11,8 @@ and from ``GRAPHFLOW_ASSET_REMAP`` (``PREFIX=FOLDER`` entries separated by ``;``
 file). The user's files are never edited: a layer naming a remapped asset, directly or through
 the local layers it opens, is read into an in-memory copy whose asset paths
 ``UsdUtils.ModifyAssetPaths`` rewrites (relative ones made absolute, so they still find their
-files), and the stage opens that copy.
+files), and the stage opens that copy. ``http(s)`` assets no prefix covers can be fetched into a
+download cache (``graphflow.usd.downloads``).
 """
 from __future__ import annotations
 
@@ -64,6 +65,17 @@ def remap_table(start: str | os.PathLike | None = None) -> RemapTable:
     return RemapTable(ordered, tuple(sources))
 
 
+def project_folder_setting(start: str | os.PathLike, name: str) -> Path | None:
+    """A folder under ``[assets]`` in the nearest graphflow.toml, relative to that file (None when absent)."""
+    project = _project_file(Path(start))
+    value = _read(project).get("assets", {}).get(name) if project is not None else None
+    if value is None:
+        return None
+    if not isinstance(value, str):
+        raise StageError(f"{project}: [assets] {name} must be a folder string")
+    return (project.parent / Path(value).expanduser()).resolve()
+
+
 def _project_file(folder: Path) -> Path | None:
     for candidate in (folder.resolve(), *folder.resolve().parents):
         if (candidate / PROJECT_FILE).is_file():
@@ -92,8 +104,9 @@ def _file_entries(path: Path) -> dict[str, str]:
 class RemappedLayers:
     """In-memory copies of the layers that name remapped assets (kept alive while the stage is open)."""
 
-    def __init__(self, table: RemapTable):
+    def __init__(self, table: RemapTable, cache=None):
         self.table = table
+        self.cache = cache   # graphflow.usd.downloads.DownloadCache, or None: URLs stay as written
         self.copies: dict[str, object] = {}    # real path -> anonymous Sdf.Layer (or None: needs no copy)
 
     def root(self, path: str):
@@ -114,6 +127,11 @@ class RemappedLayers:
             if not asset:
                 return asset
             local = self.table.apply(asset)
+            if local is None and self.cache is not None:
+                if asset.startswith(("http://", "https://")):
+                    local = self.cache.fetch(asset)
+                elif "://" not in asset and not Path(asset).is_absolute():
+                    local = self.cache.relative(real, asset)   # beside a fetched layer: fetched too
             if local is not None:
                 changed = True
                 return self._copied(local) or local
