@@ -10,7 +10,8 @@ def register(commands) -> None:
     test.add_argument("-j", "--jobs", type=arguments.positive_int, metavar="N", help="processes at once (default: as many as cores)")
     test.add_argument("--junit", metavar="FILE", help="write a JUnit XML report")
     test.add_argument("--traces", metavar="DIR", help="folder for failing scenarios' traces (default: a new temporary folder)")
-    test.add_argument("--force", action="store_true", help="overwrite an existing --junit file")
+    test.add_argument("--reports", metavar="DIR", help="write an HTML run report per scenario into DIR (linked from --junit)")
+    test.add_argument("--force", action="store_true", help="overwrite an existing --junit file or reports")
     test.set_defaults(handler=command_test)
 
 

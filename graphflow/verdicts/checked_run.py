@@ -246,12 +246,13 @@ class CollectedLog:
             self.lines.append(event.message)
 
 
-def run_checked(path: str | Path, *, trace: str | Path | None = None,
+def run_checked(path: str | Path, *, trace: str | Path | None = None, report: str | Path | None = None,
                 listeners: Sequence[Any] = ()) -> Verdict:
     """Run the scenario file at *path* headless with its scripted inputs and judge its checks.
 
     Bad input (a graph that does not load, a misspelled prim or check target, a missing key file,
     no run limit) raises ``BadInput``; a run-time failure is a failed verdict naming the node.
+    *report*: the run's HTML report (graphflow.report) is written there, passed or failed.
     """
     path = str(path)
     document = load_document(path)
@@ -264,10 +265,20 @@ def run_checked(path: str | Path, *, trace: str | Path | None = None,
     with contextlib.ExitStack() as closing:
         closing.callback(checked.close)
         simulation = checked.start()
+        stream = None
         if trace is not None:
-            from graphflow.observe.trace import TraceRecorder
-
             stream = closing.enter_context(open(trace, "w", encoding="utf-8", newline="\n"))
-            TraceRecorder(simulation, stream, graph=path)
             checked.verdict.trace = str(trace)
-        return checked.run()
+        if report is None:
+            if stream is not None:
+                from graphflow.observe.trace import TraceRecorder
+
+                TraceRecorder(simulation, stream, graph=path)
+            return checked.run()
+        from graphflow.report.recording import ReportRecording, runtime_failure
+
+        recording = ReportRecording(simulation, path, also_to=stream)
+        verdict = checked.run()
+        recording.write(report, checked.document, evaluator=checked.evaluator, runtime_failure=runtime_failure(checked),
+                        seed=checked.seed, force=True)
+        return verdict

@@ -78,6 +78,7 @@ class Outcome:
     wall: float = 0.0
     trace: str | None = None
     output: list[str] = field(default_factory=list)
+    report: str | None = None       # the scenario's HTML run report (graphflow test --reports)
 
     @property
     def passed(self) -> bool:
@@ -92,39 +93,46 @@ class Outcome:
         if not self.passed:
             if self.trace:
                 lines.append(f"    trace: {self.trace}")
+            if self.report:
+                lines.append(f"    report: {self.report}")
             lines.append(f"    re-run: {rerun_command(self.path)}")
         return lines
 
 
-def run_one(path: str, trace: str) -> Outcome:
-    """Worker: run one scenario with a trace; the trace is deleted when the scenario passes."""
+def run_one(path: str, trace: str, report: str | None = None) -> Outcome:
+    """Worker: run one scenario with a trace (deleted when the scenario passes) and, if asked, a report (kept)."""
     logging.getLogger("graphflow").setLevel(logging.ERROR)   # the graph's lines go to the report, not stderr
     started = time.perf_counter()
     try:
-        result = run_checked(path, trace=trace)
+        result = run_checked(path, trace=trace, report=report)
     except BadInput as error:
         return Outcome(path, None, error=error.lines()[0], wall=time.perf_counter() - started)
-    outcome = Outcome(path, result, wall=time.perf_counter() - started, trace=trace, output=result.output)
+    outcome = Outcome(path, result, wall=time.perf_counter() - started, trace=trace, output=result.output,
+                      report=report)
     if result.passed:
         os.unlink(trace)
         outcome.trace = None
     return outcome
 
 
-def run_all(scenarios: list[tuple[Path, str | None]], jobs: int, trace_dir: Path, report=print) -> list[Outcome]:
+def run_all(scenarios: list[tuple[Path, str | None]], jobs: int, trace_dir: Path, report=print,
+            report_dir: Path | None = None) -> list[Outcome]:
     """Run every scenario on *jobs* processes; report each one's lines in the given order as it is known.
 
     A file whose problem is already known (it does not parse or load) is an ERROR outcome without a run.
     """
     traces = [str(trace_dir / f"{index:03d}-{path.stem}.jsonl") for index, (path, _) in enumerate(scenarios)]
+    reports = [str(report_dir / f"{index:03d}-{path.stem}.html") if report_dir is not None else None
+               for index, (path, _) in enumerate(scenarios)]
     runnable = [index for index, (_, problem) in enumerate(scenarios) if problem is None]
     outcomes: list[Outcome | None] = [None if problem is None else Outcome(str(path), None, error=problem)
                                       for path, problem in scenarios]
     if jobs <= 1 or len(runnable) <= 1:
-        futures = {index: _Later(run_one, str(scenarios[index][0]), traces[index]) for index in runnable}
+        futures = {index: _Later(run_one, str(scenarios[index][0]), traces[index], reports[index]) for index in runnable}
         return _report_in_order(outcomes, futures, report)
     with ProcessPoolExecutor(max_workers=min(jobs, len(runnable))) as pool:
-        futures = {index: pool.submit(run_one, str(scenarios[index][0]), traces[index]) for index in runnable}
+        futures = {index: pool.submit(run_one, str(scenarios[index][0]), traces[index], reports[index])
+                   for index in runnable}
         return _report_in_order(outcomes, futures, report)
 
 
@@ -160,6 +168,9 @@ def junit_xml(outcomes: list[Outcome]) -> bytes:
         path = Path(outcome.path)
         case = ET.SubElement(suite, "testcase", name=path.name, classname=path.parent.as_posix().replace("/", ".").strip(".") or "graphs",
                              file=outcome.path, time=f"{outcome.wall:.3f}")
+        if outcome.report:   # the run report beside the verdict (CI servers show testcase properties)
+            properties = ET.SubElement(case, "properties")
+            ET.SubElement(properties, "property", name="report", value=outcome.report)
         if outcome.error is not None:
             ET.SubElement(case, "error", message=outcome.error, type="BadInput").text = outcome.error
         elif not outcome.passed:
@@ -169,6 +180,18 @@ def junit_xml(outcomes: list[Outcome]) -> bytes:
             ET.SubElement(case, "system-out").text = "\n".join(outcome.output)
     ET.indent(suites)
     return ET.tostring(suites, encoding="utf-8", xml_declaration=True) + b"\n"
+
+
+def _report_folder(folder: str | None, force: bool) -> Path | None:
+    """The --reports folder, made if missing; one already holding reports only with --force."""
+    if folder is None:
+        return None
+    path = Path(folder)
+    path.mkdir(parents=True, exist_ok=True)
+    existing = sorted(p.name for p in path.glob("*.html"))
+    if existing and not force:
+        raise BadInput(f"{path}: already holds reports ({existing[0]}, ...); not overwriting them (use --force)")
+    return path
 
 
 def command_test(args, report=print) -> int:
@@ -182,7 +205,8 @@ def command_test(args, report=print) -> int:
         trace_dir.mkdir(parents=True, exist_ok=True)
     else:
         trace_dir = Path(tempfile.mkdtemp(prefix="graphflow-test-"))
-    outcomes = run_all(scenarios, args.jobs or os.cpu_count() or 1, trace_dir, report)
+    report_dir = _report_folder(getattr(args, "reports", None), args.force)
+    outcomes = run_all(scenarios, args.jobs or os.cpu_count() or 1, trace_dir, report, report_dir)
     if not args.traces and not any(o.trace for o in outcomes):
         shutil.rmtree(trace_dir, ignore_errors=True)
     if junit is not None:
