@@ -1,0 +1,73 @@
+"""Issue 26 item 5: randomization and sweep files report every problem at once, each with its real reason."""
+import json
+
+from conftest import GRAPHS
+
+from graphflow import cli
+
+TUNED = GRAPHS / "ur10_pick_place_tuned.json"     # a graphflow.LegacySurfaceGripper named 'gripper'
+UNKNOWN = "unknown distribution 'gaussian' (one of uniform, normal, logUniform, choice, with an optional clip)"
+
+
+def run_cli(capsys, *args):
+    code = cli.main([str(a) for a in args])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def clean_lines(err: str) -> list[str]:
+    assert "unexpected error" not in err and "Traceback" not in err
+    return err.splitlines()
+
+
+def write(path, data) -> str:
+    path.write_text(json.dumps(data), encoding="utf-8")
+    return str(path)
+
+
+def test_an_unknown_distribution_is_named_not_reported_as_a_missing_pose(tmp_path, capsys):
+    path = write(tmp_path / "r.json", {"randomize": [{"set": "gripper.kd", "gaussian": [0, 1]}]})
+    code, _out, err = run_cli(capsys, "run", TUNED, "--randomize", path)
+    assert code == 2
+    assert clean_lines(err) == [f"graphflow: error: {path}: randomize/0: {UNKNOWN}"]
+
+
+def test_a_randomization_file_lists_every_problem_with_its_reason(tmp_path, capsys):
+    entries = [
+        {"set": "gripper.kd", "gaussian": [0, 1]},
+        {"pose": "/World/Cube", "offset": {"wobble": [1, 2]}},
+        {"set": "gripper.kd", "uniform": [2, 1]},
+        {"neither": 1},
+        {"set": "gripper.kd", "uniform": [1, 2], "normal": [1, 2]},
+    ]
+    path = write(tmp_path / "r.json", {"randomize": entries})
+    code, _out, err = run_cli(capsys, "run", TUNED, "--randomize", path)
+    assert code == 2
+    assert sorted(clean_lines(err)) == sorted(f"graphflow: error: {path}: {line}" for line in [
+        f"randomize/0: {UNKNOWN}",
+        f"randomize/1/offset: {UNKNOWN.replace('gaussian', 'wobble')}",
+        "randomize/2: uniform: low must not exceed high",
+        "randomize/3: needs one of 'set', 'pose'",
+        "randomize/4: gives 'uniform' and 'normal'; use only one of them",
+    ])
+
+
+def test_a_sweep_file_lists_schema_override_and_stage_problems_together(tmp_path, capsys):
+    sweep = {"format": "graphflow-sweep", "formatVersion": [1, 0], "graph": str(TUNED),
+             "grid": {"gripper.kp": [1.0, "abc"], "gripper.nosuch": [1], "/World/Nope.physics:mass": [1.0]},
+             "randomize": [{"set": "gripper.kd", "gaussian": [0, 1]}, {"set": "gripper.kd", "uniform": [2, 1]}],
+             "seeds": 0,
+             "metrics": [{"name": "lost", "positionError": {"prim": "/World/NoCube", "target": [0, 0, 0]}}]}
+    path = write(tmp_path / "s.json", sweep)
+    code, _out, err = run_cli(capsys, "sweep", path, "--out", tmp_path / "results")
+    assert code == 2
+    assert sorted(clean_lines(err)) == sorted(f"graphflow: error: {path}: {line}" for line in [
+        f"randomize/0: {UNKNOWN}",                                              # schema
+        "seeds: 0 is less than the minimum of 1",                               # schema
+        "randomize/1: uniform: low must not exceed high",                       # semantics
+        "gripper.nosuch=1: node 'gripper' (graphflow.LegacySurfaceGripper) has no input 'nosuch'",
+        'gripper.kp="abc": node \'gripper\' input \'kp\': expected double, got "abc"',
+        "/World/Nope.physics:mass=1.0: the stage has no prim /World/Nope (did you mean '/World/Cube'?)",  # stage
+        "metrics/0 (lost): the stage has no prim /World/NoCube",
+    ])
+    assert not (tmp_path / "results").exists()
