@@ -124,7 +124,7 @@ def command_run(args) -> int:
             recording = ros2_run.attach_topics(simulation.world, None, args.record_topics)
             outputs.push(lambda kind, _error, _trace: recording.abandon() if kind is not None else recording.close())
         if args.trace:
-            _open_trace(args.trace, simulation, args.graph, outputs, args.force)
+            _open_trace(args.trace, simulation, args.graph, outputs, args.force, variant.drawn)
         if args.record:
             simulation.world.services.add(_start_recording(args, simulation.world, outputs))
         if args.gui and args.speed > 0:
@@ -174,7 +174,7 @@ def _start_recording(args, world, outputs: contextlib.ExitStack):
     return video
 
 
-def _open_trace(path: str, simulation, graph: str, outputs: contextlib.ExitStack, force: bool):
+def _open_trace(path: str, simulation, graph: str, outputs: contextlib.ExitStack, force: bool, randomized=()):
     from graphflow.observe.trace import TraceRecorder
 
     temporary = outputs.enter_context(atomic_output(path, force=force))
@@ -182,5 +182,5 @@ def _open_trace(path: str, simulation, graph: str, outputs: contextlib.ExitStack
         stream = outputs.enter_context(open(temporary, "w", encoding="utf-8", newline="\n"))
     except OSError as error:
         raise BadInput(f"{path}: cannot write the trace: {error.strerror}") from None
-    TraceRecorder(simulation, stream, graph=graph)
+    TraceRecorder(simulation, stream, graph=graph, randomized=randomized)
     return stream

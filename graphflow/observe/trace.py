@@ -17,7 +17,7 @@ import sys
 from dataclasses import dataclass
 from importlib import metadata
 from pathlib import Path
-from typing import IO, Any, Iterator
+from typing import IO, Any, Iterator, Sequence
 
 from graphflow import __version__
 from graphflow.errors import BadInput
@@ -146,7 +146,7 @@ class TraceRecorder:
     it ran (``on_tick``). The stream stays open: whoever opened it closes it.
     """
 
-    def __init__(self, simulation, stream: IO[str], *, graph: str | None = None):
+    def __init__(self, simulation, stream: IO[str], *, graph: str | None = None, randomized: Sequence[dict] = ()):
         self.simulation = simulation
         self.stream = stream
         self.instance = simulation.instance
@@ -157,7 +157,7 @@ class TraceRecorder:
         self._exec_names = [frozenset(a.name for a in node.spec.exec_outputs) for node in nodes]
         self._databases = [self.instance.database(node.name) for node in nodes]
         self._outputs = self._output_values()
-        self._write_header(graph)
+        self._write_header(graph, list(randomized))
         simulation.add_listener(self)
 
     def on_compute(self, instance, node_name: str, fired: list[str], db) -> None:
@@ -208,7 +208,7 @@ class TraceRecorder:
                     values[f"{node.name}.{name}"] = to_json_value(value)
         return values
 
-    def _write_header(self, graph: str | None) -> None:
+    def _write_header(self, graph: str | None, randomized: list[dict]) -> None:
         document = self.simulation.document
         world = self.simulation.world
         compiled = self.instance.compiled
@@ -225,6 +225,8 @@ class TraceRecorder:
             "grippers": initial_grippers(world),
             "versions": loaded_versions(),
         }
+        if randomized:   # only a randomized run has it, so other traces stay as they were
+            header["randomized"] = randomized
         self.stream.write(dumps_record(header) + "\n")
 
 

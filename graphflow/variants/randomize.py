@@ -20,7 +20,9 @@ the other entries' draws unchanged.
 """
 from __future__ import annotations
 
+import dataclasses
 import json
+import logging
 import math
 import random
 from dataclasses import dataclass
@@ -40,6 +42,7 @@ from graphflow.variants.overrides import (
     parse_set,
 )
 
+_log = logging.getLogger("graphflow.randomize")
 DISTRIBUTIONS = ("uniform", "normal", "logUniform", "choice")
 _STANDARD_NORMAL = NormalDist()
 
@@ -256,9 +259,22 @@ def variant_for_run(document: GraphDocument, set_texts: Sequence[str], randomize
                      seed: int) -> Variant:
     """What ``graphflow run --set ... [--randomize FILE --seed N]`` runs; raises OverrideError.
 
-    Node overrides are checked here; stage edits when ``Variant.create_world`` opens the stage.
+    Node overrides are checked here; stage edits when ``Variant.create_world`` opens the stage. What
+    the randomization drew is logged (``--log-level info``) and kept for the trace header.
     """
     edits: list = [parse_set(text) for text in set_texts]
+    drawn: list = []
     if randomize_file is not None:
-        edits.extend(load_randomization(randomize_file).draw(seed))
-    return make_variant(document, edits)
+        draws = load_randomization(randomize_file).draw(seed)
+        edits.extend(draws)
+        drawn = [drawn_record(edit) for edit in draws]
+        for record in drawn:
+            _log.info("%s: seed %d drew %s", randomize_file, seed, json.dumps(record))
+    return dataclasses.replace(make_variant(document, edits), drawn=tuple(drawn))
+
+
+def drawn_record(edit: Override | PoseJitter) -> dict:
+    """A drawn value as JSON: ``{"set": TARGET, "value": V}`` or ``{"pose": PRIM, "offset": [...], "yawDegrees": D}``."""
+    if isinstance(edit, PoseJitter):
+        return {"pose": edit.prim, "offset": list(edit.offset), "yawDegrees": edit.yaw_degrees}
+    return {"set": edit.target, "value": edit.value}

@@ -1,5 +1,7 @@
 """Issue 26 item 5: randomization and sweep files report every problem at once, each with its real reason."""
 import json
+import subprocess
+import sys
 
 from conftest import GRAPHS
 
@@ -71,3 +73,37 @@ def test_a_sweep_file_lists_schema_override_and_stage_problems_together(tmp_path
         "metrics/0 (lost): the stage has no prim /World/NoCube",
     ])
     assert not (tmp_path / "results").exists()
+
+
+# ---------------------------------------------------------------- 4. what --randomize drew
+
+def test_run_randomize_logs_what_it_drew_and_the_trace_header_records_it(tmp_path):
+    """The drawn values follow from the documented streams: ``random.Random("graphflow:SEED:INDEX")``."""
+    import random
+    from statistics import NormalDist
+
+    entries = [{"set": "gripper.kd", "uniform": [50, 150]},
+               {"pose": "/World/Cube", "offset": {"uniform": [[-0.01, -0.01, 0], [0.01, 0.01, 0]]},
+                "yawDegrees": {"normal": [0, 5]}}]
+    path = write(tmp_path / "r.json", {"randomize": entries})
+    trace = tmp_path / "run.jsonl"
+    done = subprocess.run([sys.executable, "-m", "graphflow", "run", str(TUNED), "--randomize", path, "--seed", "3",
+                           "--ticks", "2", "--log-level", "info", "--trace", str(trace)],
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    err = done.stderr
+    first, second = random.Random("graphflow:3:0"), random.Random("graphflow:3:1")
+    kd = 50 + 100 * first.random()
+    offset = [-0.01 + 0.02 * second.random(), -0.01 + 0.02 * second.random(), 0.0 * second.random()]
+    yaw = 5 * NormalDist().inv_cdf(second.random())
+    expected = [{"set": "gripper.kd", "value": kd}, {"pose": "/World/Cube", "offset": offset, "yawDegrees": yaw}]
+    drawn_lines = [line for line in clean_lines(err) if "drew" in line]
+    assert drawn_lines == [f"INFO graphflow.randomize: {path}: seed 3 drew {json.dumps(record)}" for record in expected]
+    header = json.loads(trace.read_text(encoding="utf-8").splitlines()[0])
+    assert header["randomized"] == expected
+
+
+def test_a_trace_without_randomize_has_no_randomized_field(tmp_path, capsys):
+    trace = tmp_path / "run.jsonl"
+    assert run_cli(capsys, "run", TUNED, "--ticks", "1", "--trace", trace)[0] == 0
+    assert "randomized" not in json.loads(trace.read_text(encoding="utf-8").splitlines()[0])
