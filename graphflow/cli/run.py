@@ -41,8 +41,8 @@ def register(commands) -> None:
     run.add_argument("--record-topics", metavar="FILE.mcap",
                      help="write every message ROS 2 publisher nodes publish to an MCAP file (ROS 2 CDR encoding)")
     run.add_argument("--checks", action="store_true",
-                     help="evaluate the graph's checks even when --ticks, --seconds, --key(s), --gamepad, --pad or --gui "
-                          "change the run (by default they are evaluated only for the run as written)")
+                     help="evaluate the graph's checks even when --ticks, --seconds, --key(s), --gamepad, --pad, "
+                          "--topic(s) or --gui change the run (by default they are evaluated only for the run as written)")
     run.add_argument("--set", action="append", default=[], metavar="TARGET=VALUE",
                      help="override (repeatable): NODE.INPUT=VALUE (a node input) or /Prim/Path.attribute=VALUE "
                           "(a stage attribute, in USD units); VALUE is JSON or a plain string (docs/sweeps.md)")
@@ -76,10 +76,9 @@ def _scripted_inputs(args, document):
 
     keys = scripted_keys(args.keys, args.key)
     pad = scripted_pad(args.gamepad, args.pad)
-    if not args.gui and keys is None and pad is None:
-        own = ScriptedInputs.of_document(document)
-        keys, pad = own.keys, own.pad
     topics = ros2_run.check_options(args.topics, args.topic, args.record_topics)
+    if not args.gui and keys is None and pad is None and topics is None:
+        return ScriptedInputs.of_document(document)   # the scenario's inputs are used whole or not at all
     return ScriptedInputs(keys=keys, pad=pad, topics=topics)
 
 
@@ -87,7 +86,7 @@ def _changed_by_options(args) -> list[str]:
     """The options that make this run differ from the graph's scenario, so its checks do not apply."""
     options = {"--ticks": args.ticks is not None, "--seconds": args.seconds is not None, "--keys": args.keys is not None,
                "--key": bool(args.key), "--gamepad": args.gamepad is not None, "--pad": bool(args.pad),
-               "--gui": args.gui}
+               "--topics": args.topics is not None, "--topic": bool(args.topic), "--gui": args.gui}
     return [name for name, given in options.items() if given]
 
 

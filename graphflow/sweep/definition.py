@@ -198,6 +198,11 @@ def _problems(sweep: Sweep, randomize: list, broken_entries: set) -> list[str]:
     names = sweep.metric_names
     problems += [f"{sweep.source}: metrics: the name {name!r} is used twice"
                  for name in dict.fromkeys(names) if names.count(name) > 1]
+    try:
+        from graphflow.verdicts.checked_run import ScriptedInputs
+        ScriptedInputs.of_document(document)     # the scenario's inputs every episode attaches
+    except BadInput as error:
+        problems += error.lines()
     stage = _StageForChecks(document)
     problems += _override_problems(sweep, document, stage)
     problems += _metric_prim_problems(sweep, document, stage)
