@@ -1,6 +1,7 @@
 """Commands about graph files: ``validate``, ``import``, ``new``, ``nodes``."""
 from __future__ import annotations
 
+import dataclasses
 import json
 import re
 import sys
@@ -132,7 +133,11 @@ def command_import(args) -> int:
         refuse_existing(args.output, args.force)
     stage = str(resolve_stage(args.stage, Path.cwd()))
     result = import_graph(stage, graph_path=args.graph, output_path=args.output, skip_unknown=args.skip_unknown)
-    for warning in result.warnings:
+    from graphflow.validate.stage_names import unset_target_warnings
+
+    unset = [str(dataclasses.replace(problem, file=f"{args.stage}: {result.graph_path}"))   # named as in the USD file
+             for problem in unset_target_warnings(result.document)]
+    for warning in [*result.warnings, *unset]:
         print(f"warning: {warning}", file=sys.stderr)
     if args.output:
         save_document(result.document, args.output, force=args.force)
