@@ -111,10 +111,19 @@ def _write_node_docs(args) -> int:
 
 
 def first_sentence(text: str) -> str:
-    """The first sentence of a description, whole (never cut at "e.g." or "..."), without its final period."""
-    match = _SENTENCE_END.search(text)
-    sentence = text[:match.start() + 1] if match else text
-    return " ".join(sentence.split()).rstrip(".")
+    """The first sentence of a description, whole (never cut at "e.g." or "..."), without its final period.
+
+    A first sentence that is only a label ("Event source.") says nothing apart from the next one: the
+    summary runs on to the first sentence of three words or more.
+    """
+    end = 0
+    for match in _SENTENCE_END.finditer(text):
+        sentence, end = text[end:match.start() + 1], match.start() + 1
+        if len(sentence.split()) >= 3:
+            break
+    else:
+        end = len(text)
+    return " ".join(text[:end].split()).rstrip(".")
 
 
 def command_new(args) -> int:
