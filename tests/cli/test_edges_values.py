@@ -112,3 +112,54 @@ def test_a_check_time_after_the_run_ends_is_refused_naming_the_check(check, tmp_
     assert code == 2
     one_line(err, path, f"checks[7] ({check['check']}): {key} {check[key]:g} s is after the run ends "
                         "(settings/duration 30 s)")
+
+
+# ---------------------------------------------------------------- 10. strict JSON: where
+
+GRAPH_WITH_A_FLAW = '''{
+  "format": "graphflow",
+  "formatVersion": [1, 0],
+  "nodes": [
+    {"name": "tick", "type": "omni.graph.action.OnTick"},
+    {"name": "grip", "type": "graphflow.LegacySurfaceGripper",
+     "inputs": {"kp": 100.0, "kd": FLAW}}
+  ]
+}
+'''
+
+
+@pytest.mark.parametrize("flaw, column, path, reason", [
+    ("NaN", 36, "nodes/1/inputs/kd, node 'grip'", "NaN is not a JSON value (RFC 8259 has no NaN or Infinity)"),
+    ("-Infinity", 36, "nodes/1/inputs/kd, node 'grip'", "-Infinity is not a JSON value"),
+    ("1e999", 36, "nodes/1/inputs/kd, node 'grip'", "number 1e999 is too large"),
+    ('1, "kp": 2', 39, "nodes/1/inputs/kp, node 'grip'", 'duplicate key "kp" in one object'),
+])
+def test_a_strict_json_refusal_names_line_column_key_path_and_node(flaw, column, path, reason, tmp_path, capsys):
+    graph = tmp_path / "flawed.json"
+    graph.write_text(GRAPH_WITH_A_FLAW.replace("FLAW", flaw), encoding="utf-8")
+    for command in ("validate", "run"):
+        code, _out, err = run_cli(capsys, command, graph)
+        assert code == 2
+        one_line(err, f"{graph}: invalid JSON at line 7 column {column} ({path}): {reason}")
+
+
+def test_a_flaw_outside_the_nodes_names_the_key_path_only(tmp_path, capsys):
+    graph = tmp_path / "flawed.json"
+    graph.write_text('{"format": "graphflow", "formatVersion": [1, 0], "nodes": [],\n "settings": {"timeStep": NaN}}')
+    code, _out, err = run_cli(capsys, "validate", graph)
+    assert code == 2
+    one_line(err, f"{graph}: invalid JSON at line 2 column 27 (settings/timeStep): NaN is not a JSON value")
+
+
+# ---------------------------------------------------------------- 9. trace diff on a deeply nested trace
+
+def test_trace_diff_on_a_deeply_nested_trace_is_exit_2_naming_the_line(tmp_path, capsys):
+    header = json.dumps({"format": "graphflow-trace", "version": 1, "graph": "g.json", "nodes": {}})
+    shallow, deep = tmp_path / "shallow.jsonl", tmp_path / "deep.jsonl"
+    shallow.write_text(header + '\n{"tick": 1, "t": 0.5, "outputs": {"x": [[1]]}}\n', encoding="utf-8")
+    deep.write_text(header + '\n{"tick": 1, "t": 0.5, "outputs": {"x": ' + "[" * 100_000 + "]" * 100_000 + "}}\n",
+                    encoding="utf-8")
+    for left, right in ((deep, shallow), (shallow, deep)):
+        code, out, err = run_cli(capsys, "trace", "diff", left, right)
+        assert code == 2 and out == ""       # 1 would read as "the traces differ"
+        one_line(err, f"{deep}: line 2 is not JSON", "nested more than 64 levels deep")
