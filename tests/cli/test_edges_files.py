@@ -107,3 +107,25 @@ def test_a_trace_without_randomize_has_no_randomized_field(tmp_path, capsys):
     trace = tmp_path / "run.jsonl"
     assert run_cli(capsys, "run", TUNED, "--ticks", "1", "--trace", trace)[0] == 0
     assert "randomized" not in json.loads(trace.read_text(encoding="utf-8").splitlines()[0])
+
+
+# ---------------------------------------------------------------- 11. a folder where a file is written
+
+def test_test_with_a_junit_folder_is_bad_usage_before_any_scenario_runs(tmp_path, capsys):
+    folder = tmp_path / "reports"
+    folder.mkdir()
+    code, out, err = run_cli(capsys, "test", GRAPHS / "scenarios", "--junit", folder, "--force")
+    assert code == 2
+    assert out == ""                                     # no scenario line: nothing ran
+    assert clean_lines(err) == [f"graphflow: error: {folder}: is a folder, not a file"]
+    assert list(folder.iterdir()) == []
+
+
+def test_other_file_outputs_given_a_folder_are_refused_before_work(tmp_path, capsys):
+    folder = tmp_path / "out"
+    folder.mkdir()
+    for command in (["run", GRAPHS / "counter_branch_print.json", "--trace", folder, "--force"],
+                    ["nodes", "--markdown", "-o", folder, "--force"]):
+        code, out, err = run_cli(capsys, *command)
+        assert code == 2 and out == ""
+        assert clean_lines(err) == [f"graphflow: error: {folder}: is a folder, not a file"]
