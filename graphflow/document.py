@@ -106,7 +106,7 @@ def _problems_of_valid_parts(data: Any, source: str, registry: Registry | None, 
         return [entry for index, entry in enumerate(entries) if (section, index) not in broken]
 
     skipped = {entry.get("name") for index, entry in enumerate(data["nodes"])
-               if ("nodes", index) in broken and isinstance(entry, dict)}
+               if ("nodes", index) in broken and isinstance(entry, dict) and isinstance(entry.get("name"), str)}
     settings = data.get("settings", {})
     document = GraphDocument(
         nodes=tuple(NodeDoc(n["name"], n["type"], n.get("typeVersion"), frozen_mapping(n.get("inputs", {})))

@@ -1,6 +1,7 @@
 """Commands about graph files: ``validate``, ``import``, ``new``, ``nodes``."""
 from __future__ import annotations
 
+import dataclasses
 import json
 import re
 import sys
@@ -141,10 +142,19 @@ def _write_node_docs(args) -> int:
 
 
 def first_sentence(text: str) -> str:
-    """The first sentence of a description, whole (never cut at "e.g." or "..."), without its final period."""
-    match = _SENTENCE_END.search(text)
-    sentence = text[:match.start() + 1] if match else text
-    return " ".join(sentence.split()).rstrip(".")
+    """The first sentence of a description, whole (never cut at "e.g." or "..."), without its final period.
+
+    A first sentence that is only a label ("Event source.") says nothing apart from the next one: the
+    summary runs on to the first sentence of three words or more.
+    """
+    end = 0
+    for match in _SENTENCE_END.finditer(text):
+        sentence, end = text[end:match.start() + 1], match.start() + 1
+        if len(sentence.split()) >= 3:
+            break
+    else:
+        end = len(text)
+    return " ".join(text[:end].split()).rstrip(".")
 
 
 def command_new(args) -> int:
@@ -177,7 +187,11 @@ def command_import(args) -> int:
         refuse_existing(args.output, args.force)
     stage = str(resolve_stage(args.stage, Path.cwd()))
     result = import_graph(stage, graph_path=args.graph, output_path=args.output, skip_unknown=args.skip_unknown)
-    for warning in result.warnings:
+    from graphflow.validate.stage_names import unset_target_warnings
+
+    unset = [str(dataclasses.replace(problem, file=f"{args.stage}: {result.graph_path}"))   # named as in the USD file
+             for problem in unset_target_warnings(result.document)]
+    for warning in [*result.warnings, *unset]:
         print(f"warning: {warning}", file=sys.stderr)
     if args.output:
         save_document(result.document, args.output, force=args.force)

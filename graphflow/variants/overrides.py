@@ -299,6 +299,7 @@ class Variant:
 
     document: GraphDocument
     stage_edits: tuple = ()
+    drawn: tuple = ()      # what --randomize drew, as JSON records (the trace header's ``randomized``)
 
     def create_world(self, *, gui: bool = False):
         """The document's world with the stage edits on the session layer (as ``runtime.create_world_for``)."""

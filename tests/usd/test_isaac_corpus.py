@@ -138,6 +138,7 @@ def _run_entry(entry, tmp_path, capsys):
             return "fails at import", err
         if main(["validate", str(output)]) != 0:
             return "fails at validate", capsys.readouterr().err
+        lines.extend(line for line in capsys.readouterr().err.splitlines() if line.startswith("warning: "))
         if main(["run", str(output), "--ticks", str(TICKS)]) != 0:
             return "fails at run", capsys.readouterr().err
         capsys.readouterr()
@@ -244,3 +245,14 @@ over "Graphs"
     nodes = {node["name"]: node for node in json.loads(graph.read_text())["nodes"]}
     assert nodes["JointCommandArray"]["inputs"]["input0"] == 1.0
     assert nodes["JointNameArray"]["inputs"]["input0"] == "dummy_base_prismatic_x_joint"
+
+
+def test_lite6_layer_without_its_robot_targets_is_warned_before_it_fails_at_run(tmp_path, capsys):
+    """Issue 26: the unset targetPrim that fails at the first tick is a warning of import and validate."""
+    entry = next(e for e in _entries() if e["id"] == "g20_lite6_ros2_joint_states")
+    output = tmp_path / "graph.json"
+    assert main(["import", str(CORPUS / "files" / entry["main"]), "--graph", entry["contents"]["graphs"][0]["path"],
+                 "-o", str(output)]) == 0
+    assert "node 'PublisherJointState' input 'inputs:targetPrim': required target is unset" in capsys.readouterr().err
+    assert main(["validate", str(output)]) == 0
+    assert "node 'PublisherJointState' input 'inputs:targetPrim': required target is unset" in capsys.readouterr().err
