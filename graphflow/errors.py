@@ -48,6 +48,7 @@ EXTRAS = {
     "viz": "matplotlib and Pillow",
     "ros": "mcap, mcap-ros2-support and rosbags",
     "ray": "Ray",
+    "studio": "Starlette, uvicorn and websockets",
 }
 
 
