@@ -5,6 +5,7 @@ Every route is behind ``guard.Guard`` (token, Host, Origin, body size). Errors t
 """
 from __future__ import annotations
 
+import asyncio
 import json
 from dataclasses import dataclass
 from functools import lru_cache
@@ -12,7 +13,8 @@ from functools import lru_cache
 from starlette.applications import Starlette
 from starlette.requests import Request
 from starlette.responses import HTMLResponse, JSONResponse
-from starlette.routing import Route
+from starlette.routing import Route, WebSocketRoute
+from starlette.websockets import WebSocket, WebSocketDisconnect
 
 from graphflow.errors import BadInput
 from graphflow.studio import editing
@@ -52,6 +54,53 @@ async def _body(request: Request) -> dict:
     if not isinstance(body, dict):
         raise BadInput("the request body must be a JSON object")
     return body
+
+
+async def stream_live(websocket: WebSocket, path, folder) -> None:
+    """Run *path* live for one page: its commands in, the run's frames out, until the page goes."""
+    from graphflow.report.build import _finite as json_safe  # NaN and infinities as the report writes them
+    from graphflow.studio.live import LiveRun, report_path
+
+    loop, outbox = asyncio.get_running_loop(), asyncio.Queue()
+    run = LiveRun(path, lambda message: loop.call_soon_threadsafe(outbox.put_nowait, message))
+
+    async def send_frames():
+        while True:
+            message = await outbox.get()
+            await websocket.send_text(json.dumps(json_safe(message), separators=(",", ":")))
+
+    sender = asyncio.create_task(send_frames())
+    try:
+        while True:
+            try:
+                message = json.loads(await websocket.receive_text())
+                _live_message(run, message, folder, report_path)
+            except (ValueError, BadInput, KeyError, TypeError) as error:
+                outbox.put_nowait({"type": "error", "message": f"bad live message: {error}"})
+    except WebSocketDisconnect:
+        pass
+    finally:
+        sender.cancel()
+        await asyncio.to_thread(run.close)
+
+
+LIVE_COMMANDS = {"play", "pause", "step", "reset", "speed"}
+
+
+def _live_message(run, message, folder, report_path) -> None:
+    """One message of the page: a run command, a key, a gamepad control, or a save-as."""
+    if not isinstance(message, dict):
+        raise BadInput("a live message is a JSON object")
+    if "key" in message:
+        run.keys.press(message["key"], bool(message.get("down")))
+    elif "pad" in message:
+        run.pad.move(message["pad"], message.get("value"))
+    elif message.get("command") in LIVE_COMMANDS:
+        run.command(message["command"], value=message.get("value"))
+    elif message.get("command") in ("saveReport", "saveTrace"):
+        run.command(message["command"], path=report_path(folder, message.get("path", "")))
+    else:
+        raise BadInput(f"unknown live message {json.dumps(message)[:80]}")
 
 
 def build_app(session: Session, hosts: set[str]) -> Guard:
@@ -96,7 +145,16 @@ def build_app(session: Session, hosts: set[str]) -> Guard:
         return JSONResponse({"error": f"{request.method} is not allowed on {request.url.path}", "status": 405},
                             status_code=405)
 
-    routes = [Route("/", page), Route("/api/info", info), Route("/api/palette", palette),
+    async def live(websocket: WebSocket):
+        await websocket.accept()
+        try:
+            path = session.folder.resolve(websocket.query_params.get("path", ""))
+        except BadInput as error:
+            await websocket.send_json({"type": "error", "message": str(error)})
+            return await websocket.close(code=1008)
+        await stream_live(websocket, path, session.folder)
+
+    routes = [Route("/", page), WebSocketRoute("/api/live", live), Route("/api/info", info), Route("/api/palette", palette),
               Route("/api/graph", open_graph), Route("/api/check", check, methods=["POST"]),
               Route("/api/save", save, methods=["POST"])]
     app = Starlette(routes=routes, exception_handlers={BadInput: bad_input, 404: not_found, 405: wrong_method})
