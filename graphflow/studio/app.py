@@ -37,7 +37,8 @@ def _page(session: Session) -> str:
     from graphflow.report.page import bundle_text
 
     config = json.dumps({"mode": "studio", "token": session.token, "file": session.opened}).replace("<", "\\u003c")
-    script = f'<script id="graphflow-studio" type="application/json">{config}</script>'
+    # the icon link keeps the browser from asking for /favicon.ico, which the guard would refuse (no token)
+    script = f'<link rel="icon" href="data:,"><script id="graphflow-studio" type="application/json">{config}</script>'
     return bundle_text().replace(STUDIO_MARK, script, 1)
 
 
@@ -118,7 +119,9 @@ def build_app(session: Session, hosts: set[str]) -> Guard:
 
     async def open_graph(request: Request):
         path = session.folder.resolve(request.query_params.get("path", ""))
-        return JSONResponse({"path": session.folder.relative(path), **editing.read_graph(path)})
+        opened = editing.read_graph(path)
+        return JSONResponse({"path": session.folder.relative(path), "layout": editing.drawn_layout(opened["data"], path),
+                             **opened})
 
     async def check(request: Request):
         body = await _body(request)

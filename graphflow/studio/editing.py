@@ -102,6 +102,17 @@ def read_graph(path: Path) -> dict:
     return {"text": text, "data": data, "revision": revision(text), "problems": [problem_json(p) for p in problems]}
 
 
+def drawn_layout(data, path: Path) -> dict:
+    """Where ``graphflow draw`` places each node ({name: [x, y]}), for a graph with no positions in ``ui``."""
+    from graphflow.report.build import graph_layout
+
+    try:
+        document = parse_document(data, str(path))
+    except GraphError:
+        return {}
+    return {node["name"]: [node["x"], node["y"]] for node in graph_layout(document)["nodes"]}
+
+
 @dataclass(frozen=True)
 class SaveOutcome:
     """What a save did: ``saved`` or the reason it refused (``conflict``, ``invalid-over-valid``)."""

@@ -1,0 +1,75 @@
+// The selected node: rename, delete, and its authored inputs with widgets from the spec
+// (tokens as menus, numbers with the spec's range, booleans as boxes, anything else as JSON).
+import React, { useState } from "react";
+
+function parsedValue(port, text) {
+  if (port.tokens) return text;
+  if (/^(u?int|int64|uint64|double|float|half)$/.test(port.type)) return Number(text);
+  if (port.type === "string" || port.type === "token" || port.type === "path") return text;
+  return JSON.parse(text);
+}
+
+function InputWidget({ port, value, onChange }) {
+  const shown = value === undefined ? port.default : value;
+  const [draft, setDraft] = useState(shown === undefined ? "" : (typeof shown === "string" ? shown : JSON.stringify(shown)));
+  const [error, setError] = useState(null);
+  if (port.tokens) {
+    return (
+      <select data-input={port.name} value={shown ?? ""} onChange={(event) => onChange(event.target.value)}>
+        {port.tokens.map((token) => <option key={token} value={token}>{token}</option>)}
+      </select>
+    );
+  }
+  if (port.type === "bool") {
+    return <input type="checkbox" data-input={port.name} checked={Boolean(shown)} onChange={(event) => onChange(event.target.checked)} />;
+  }
+  const numeric = /^(u?int|int64|uint64|double|float|half)$/.test(port.type);
+  const commit = () => {
+    try {
+      const next = parsedValue(port, draft);
+      if (numeric && (Number.isNaN(next) || (port.minimum !== undefined && next < port.minimum)
+          || (port.maximum !== undefined && next > port.maximum))) {
+        throw new Error(`${port.name} takes a number in [${port.minimum ?? "-∞"}, ${port.maximum ?? "∞"}]`);
+      }
+      setError(null);
+      onChange(next);
+    } catch (problem) {
+      setError(problem.message);
+    }
+  };
+  return (
+    <span>
+      <input type={numeric ? "number" : "text"} data-input={port.name} value={draft} min={port.minimum} max={port.maximum}
+             onChange={(event) => setDraft(event.target.value)} onBlur={commit}
+             onKeyDown={(event) => event.key === "Enter" && commit()} />
+      {error && <span className="gf-problem" data-widget-error={port.name}>{error}</span>}
+    </span>
+  );
+}
+
+export default function Inspector({ node, type, problems, onRename, onDelete, onInput }) {
+  const [name, setName] = useState(node.name);
+  const mine = problems.filter((problem) => problem.node === node.name);
+  const authored = node.inputs || {};
+  return (
+    <section className="gf-inspector" data-testid="inspector" data-node={node.name}>
+      <h2>{node.name} <small>{node.type}</small></h2>
+      {type && <p className="gf-description">{type.description}</p>}
+      <label>name <input data-field="name" value={name} onChange={(event) => setName(event.target.value)}
+                         onBlur={() => name !== node.name && onRename(name)}
+                         onKeyDown={(event) => event.key === "Enter" && name !== node.name && onRename(name)} /></label>
+      <button type="button" data-action="delete" onClick={onDelete}>delete node</button>
+      {mine.map((problem, index) => <div key={index} className="gf-problem">{problem.message}</div>)}
+      <table>
+        <tbody>
+          {(type ? type.inputs.filter((port) => !port.execution) : []).map((port) => (
+            <tr key={`${node.name}-${port.name}`} title={`${port.type}: ${port.description}`}>
+              <th>{port.name}</th>
+              <td><InputWidget port={port} value={authored[port.name]} onChange={(value) => onInput(port.name, value)} /></td>
+            </tr>
+          ))}
+        </tbody>
+      </table>
+    </section>
+  );
+}

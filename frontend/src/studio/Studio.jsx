@@ -1,0 +1,233 @@
+// The studio page: palette, editable graph, inspector, save with conflicts shown, and the live run.
+// The browser never judges a graph: every edit is sent to /api/check (graphflow validate's own checks).
+import React, { useCallback, useEffect, useMemo, useRef, useState } from "react";
+import { call, freeName, liveSocket } from "./api.js";
+import Palette from "./Palette.jsx";
+import Inspector from "./Inspector.jsx";
+import StudioGraph from "./StudioGraph.jsx";
+import { LiveBar, LivePanel } from "./Live.jsx";
+import "./studio.css";
+
+const NO_LIVE = { outputs: {}, computed: new Set(), grippers: {}, log: [], tick: 0, time: 0, playing: false, speed: 1 };
+const MAX_LOG = 300;
+
+function portType(typesById, graph, nodeName, group, port) {
+  const node = graph.nodes.find((entry) => entry.name === nodeName);
+  const type = node && typesById[node.type];
+  const found = type && type[group].find((entry) => entry.name === port);
+  return found ? found.type : null;
+}
+
+function startPositions(graph, layout) {
+  const saved = (graph.ui && graph.ui.positions) || {};
+  const positions = {};
+  graph.nodes.forEach((node, index) => {
+    const at = saved[node.name] || (layout && layout[node.name]);
+    positions[node.name] = at ? { x: at[0], y: at[1] } : { x: 40 + 260 * (index % 5), y: 40 + 160 * Math.floor(index / 5) };
+  });
+  return positions;
+}
+
+export default function Studio({ config }) {
+  const [palette, setPalette] = useState(null);
+  const [file, setFile] = useState(null);           // {path, data, revision}
+  const [problems, setProblems] = useState([]);
+  const [positions, setPositions] = useState({});
+  const [selected, setSelected] = useState(null);
+  const [notice, setNotice] = useState(null);
+  const [conflict, setConflict] = useState(null);
+  const [live, setLive] = useState(null);
+  const socket = useRef(null);
+  const checkCount = useRef(0);
+
+  useEffect(() => {
+    call(config, "GET", "/api/palette").then(setPalette);
+    if (config.file) {
+      call(config, "GET", `/api/graph?path=${encodeURIComponent(config.file)}`).then((opened) => {
+        if (opened.http !== 200) return setNotice(opened.error);
+        setFile({ path: opened.path, data: opened.data, revision: opened.revision });
+        setProblems(opened.problems);
+        setPositions(startPositions(opened.data, opened.layout));
+      });
+    }
+  }, [config]);
+
+  const typesById = useMemo(() => Object.fromEntries((palette ? palette.types : []).map((type) => [type.id, type])), [palette]);
+
+  const edit = useCallback((change) => {
+    const data = change(structuredClone(file.data));
+    setFile({ ...file, data });
+    const count = ++checkCount.current;
+    call(config, "POST", "/api/check", { path: file.path, data }).then((checked) => {
+      if (count === checkCount.current) setProblems(checked.problems || [{ message: checked.error }]);
+    });
+  }, [config, file]);
+
+  const addNode = useCallback((type) => {
+    const name = freeName(file.data.nodes, type.id);
+    setPositions((now) => ({ ...now, [name]: { x: 60, y: 60 + 30 * file.data.nodes.length } }));
+    setSelected(name);
+    edit((data) => {
+      data.nodes.push({ name, type: type.id });
+      return data;
+    });
+  }, [file, edit]);
+
+  const compatible = useCallback((connection) => {
+    const source = portType(typesById, file.data, connection.source, "outputs", connection.sourceHandle);
+    const target = portType(typesById, file.data, connection.target, "inputs", connection.targetHandle);
+    return { source, target, ok: Boolean(source && target && palette.connects[source]?.includes(target)) };
+  }, [typesById, file, palette]);
+
+  const connect = useCallback((connection) => {
+    const src = `${connection.source}.outputs:${connection.sourceHandle}`;
+    const dst = `${connection.target}.inputs:${connection.targetHandle}`;
+    const types = compatible(connection);
+    if (!types.ok) {
+      setNotice(`type error: ${src} (${types.source}) cannot feed ${dst} (${types.target})`);
+      return false;
+    }
+    setNotice(null);
+    edit((data) => {
+      data.connections = [...(data.connections || []), { src, dst }];
+      return data;
+    });
+    return true;
+  }, [compatible, edit]);
+
+  const save = useCallback(async (options = {}) => {
+    const path = options.path || file.path;
+    const answer = await call(config, "POST", "/api/save", { path, data: file.data,
+      revision: options.path ? null : file.revision, replaceValid: Boolean(options.replaceValid) });
+    setConflict(answer.http === 409 ? answer : null);
+    if (answer.http === 200) {
+      if (!options.path) setFile((current) => ({ ...current, revision: answer.revision }));
+      setNotice(`saved ${path}${answer.problems.length ? " (a draft: it does not validate)" : ""}`);
+    } else if (answer.http !== 409) setNotice(answer.error);
+    else setNotice(answer.status === "conflict" ? "not saved: the file changed on disk since it was opened"
+      : "not saved: this graph does not validate and would replace a valid file");
+  }, [config, file]);
+
+  const send = useCallback((message) => {
+    if (socket.current && socket.current.readyState === WebSocket.OPEN) socket.current.send(JSON.stringify(message));
+  }, []);
+
+  const startLive = useCallback(() => {
+    if (socket.current) socket.current.close();
+    const ws = liveSocket(config, file.path);
+    socket.current = ws;
+    const stem = file.path.replace(/\.json$/, "");
+    const reportPath = `${stem}.report.html`;
+    const tracePath = `${stem}.live.jsonl`;
+    ws.onmessage = (event) => {
+      const message = JSON.parse(event.data);
+      setLive((current) => {
+        const base = current || { ...NO_LIVE, reportPath, tracePath };
+        if (message.type === "start") {
+          const outputs = Object.fromEntries(Object.entries(message.run.outputs).map(([key, changes]) => [key, changes.at(-1)[1]]));
+          return { ...NO_LIVE, reportPath, tracePath, speed: base.speed, outputs, limit: message.limit };
+        }
+        if (message.type === "error") return { ...base, notice: message.message };
+        if (message.type === "saved") return { ...base, notice: `saved ${message.path}` };
+        const grippers = { ...base.grippers };
+        Object.entries(message.grippers).forEach(([path, fields]) => { grippers[path] = { ...grippers[path], ...fields }; });
+        return { ...base, outputs: { ...base.outputs, ...message.outputs }, computed: new Set(message.computed), grippers,
+                 tick: message.tick, time: message.time, playing: message.playing, speed: message.speed,
+                 ended: message.ended, log: [...base.log, ...message.log].slice(-MAX_LOG) };
+      });
+    };
+    ws.onclose = () => setLive((current) => current && { ...current, notice: "live run closed" });
+  }, [config, file]);
+
+  useEffect(() => {   // keys go to the live run (OnKeyboardInput), except while typing in a field
+    if (!live) return undefined;
+    const handler = (down) => (event) => {
+      if (event.repeat || ["INPUT", "SELECT", "TEXTAREA"].includes(event.target.tagName)) return;
+      send({ key: event.code, down });
+      event.preventDefault();
+    };
+    const press = handler(true);
+    const release = handler(false);
+    window.addEventListener("keydown", press);
+    window.addEventListener("keyup", release);
+    return () => { window.removeEventListener("keydown", press); window.removeEventListener("keyup", release); };
+  }, [live !== null, send]);
+
+  useEffect(() => () => socket.current && socket.current.close(), []);
+
+  useEffect(() => {   // what a browser test drives and reads
+    window.graphflowStudio = { file, problems, live, connect, save, startLive, send };
+    document.body.dataset.studio = file ? "ready" : "loading";
+  }, [file, problems, live, connect, save, startLive, send]);
+
+  if (!palette || !file) return <div className="gf-studio" data-testid="studio">{notice || "loading…"}</div>;
+  const node = file.data.nodes.find((entry) => entry.name === selected);
+  const graphProblems = problems.filter((problem) => !problem.node);
+  return (
+    <div className="gf-studio" data-testid="studio">
+      <header className="gf-studio-bar">
+        <b>{file.path}</b>
+        <button type="button" data-action="save" onClick={() => save()}>save</button>
+        <button type="button" data-action="live" onClick={startLive}>run live</button>
+        <span data-testid="problem-count" data-count={problems.length}>
+          {problems.length ? `${problems.length} problem(s)` : "valid"}</span>
+        {notice && <span className="gf-notice" data-testid="notice">{notice}</span>}
+      </header>
+      {conflict && (
+        <section className="gf-conflict" data-testid="conflict" data-kind={conflict.status}>
+          {conflict.status === "conflict"
+            ? <><h2>The file changed on disk since you opened it</h2><pre>{conflict.difference}</pre></>
+            : <><h2>This graph does not validate; the file on disk does</h2>
+                <button type="button" data-action="replace-valid" onClick={() => save({ replaceValid: true })}>replace it anyway</button>
+                <button type="button" data-action="save-draft" onClick={() => save({ path: file.path.replace(/\.json$/, "") + ".draft.json" })}>
+                  save as a draft beside it</button></>}
+        </section>
+      )}
+      {live && <LiveBar live={live} send={send} />}
+      <div className="gf-studio-main">
+        <Palette types={palette.types} onAdd={addNode} />
+        <StudioGraph graph={file.data} typesById={typesById} problems={problems} positions={positions}
+                     live={live || NO_LIVE} selected={selected} onSelect={setSelected}
+                     onNodesChange={(changes) => setPositions((now) => {
+                       const next = { ...now };
+                       changes.forEach((change) => { if (change.type === "position" && change.position) next[change.id] = change.position; });
+                       return next;
+                     })}
+                     onMove={(name, at) => edit((data) => {
+                       data.ui = { ...(data.ui || {}), positions: { ...((data.ui || {}).positions || {}), [name]: [Math.round(at.x), Math.round(at.y)] } };
+                       return data;
+                     })}
+                     onConnect={connect}
+                     onDisconnect={(id) => edit((data) => {
+                       data.connections = data.connections.filter((entry) => `${entry.src}->${entry.dst}` !== id);
+                       return data;
+                     })} />
+        <aside className="gf-side">
+          {graphProblems.map((problem, index) => <div key={index} className="gf-problem">{problem.message}</div>)}
+          {node && <Inspector key={node.name} node={node} type={typesById[node.type]} problems={problems}
+                              onRename={(name) => { edit((data) => renamed(data, node.name, name)); setSelected(name); }}
+                              onDelete={() => { edit((data) => deleted(data, node.name)); setSelected(null); }}
+                              onInput={(port, value) => edit((data) => {
+                                const entry = data.nodes.find((item) => item.name === node.name);
+                                entry.inputs = { ...(entry.inputs || {}), [port]: value };
+                                return data;
+                              })} />}
+          {live && <LivePanel live={live} send={send} />}
+        </aside>
+      </div>
+    </div>
+  );
+}
+
+function renamed(data, from, to) {
+  const swap = (end) => (end.startsWith(`${from}.`) ? to + end.slice(from.length) : end);
+  data.nodes.forEach((node) => { if (node.name === from) node.name = to; });
+  data.connections = (data.connections || []).map((entry) => ({ src: swap(entry.src), dst: swap(entry.dst) }));
+  return data;
+}
+
+function deleted(data, name) {
+  data.nodes = data.nodes.filter((node) => node.name !== name);
+  data.connections = (data.connections || []).filter((entry) => !entry.src.startsWith(`${name}.`) && !entry.dst.startsWith(`${name}.`));
+  return data;
+}

@@ -1,0 +1,107 @@
+// The graph being edited, in React Flow: one handle per port of the node's spec, connections only
+// between ports whose types the runtime lets connect (palette.connects is graphflow.types.can_connect),
+// problems marked on the node and port they name, live values on the wires and computed nodes lit.
+import React, { memo, useEffect, useMemo, useState } from "react";
+import { BaseEdge, Background, Controls, EdgeLabelRenderer, Handle, Position, ReactFlow, applyNodeChanges, getBezierPath } from "@xyflow/react";
+import { formatValue, shortValue } from "../data.js";
+
+const ROW = 18;
+const TOP = 40;
+
+const EditNode = memo(function EditNode({ data }) {
+  const { node, type, problems, computed, selected } = data;
+  const inputs = type ? type.inputs : [];
+  const outputs = type ? type.outputs : [];
+  const flagged = new Set(problems.map((problem) => problem.attribute));
+  const classes = ["gf-node", "gf-edit-node"];
+  if (problems.length) classes.push("gf-has-problem");
+  if (computed) classes.push("gf-computed");
+  if (selected) classes.push("gf-selected");
+  return (
+    <div className={classes.join(" ")} data-node={node.name} data-problems={problems.length}
+         data-computed={computed ? "true" : "false"}
+         style={{ height: TOP + ROW * Math.max(inputs.length, outputs.length, 1) + 6 }}
+         title={problems.map((problem) => problem.message).join("\n")}>
+      <div className="gf-node-name">{node.name}</div>
+      <div className="gf-node-type">{type ? type.uiName : `unknown type ${node.type}`}</div>
+      {inputs.map((port, row) => (
+        <React.Fragment key={`i-${port.name}`}>
+          <Handle type="target" position={Position.Left} id={port.name} style={{ top: TOP + ROW * row + 8 }}
+                  className={port.execution ? "gf-handle-exec" : "gf-handle-data"} data-port={`inputs:${port.name}`} />
+          <span className={`gf-port gf-port-in${flagged.has(`inputs:${port.name}`) ? " gf-port-problem" : ""}`}
+                data-port-label={`inputs:${port.name}`} style={{ top: TOP + ROW * row }}>{port.name}</span>
+        </React.Fragment>
+      ))}
+      {outputs.map((port, row) => (
+        <React.Fragment key={`o-${port.name}`}>
+          <Handle type="source" position={Position.Right} id={port.name} style={{ top: TOP + ROW * row + 8 }}
+                  className={port.execution ? "gf-handle-exec" : "gf-handle-data"} data-port={`outputs:${port.name}`} />
+          <span className={`gf-port gf-port-out${flagged.has(`outputs:${port.name}`) ? " gf-port-problem" : ""}`}
+                style={{ top: TOP + ROW * row }}>{port.name}</span>
+        </React.Fragment>
+      ))}
+    </div>
+  );
+});
+
+function LiveEdge({ id, sourceX, sourceY, targetX, targetY, sourcePosition, targetPosition, data, style }) {
+  const [path, labelX, labelY] = getBezierPath({ sourceX, sourceY, sourcePosition, targetX, targetY, targetPosition });
+  return (
+    <>
+      <BaseEdge id={id} path={path} style={style} />
+      {data.value !== undefined && (
+        <EdgeLabelRenderer>
+          <div className="gf-wire-value nodrag nopan" data-wire={data.wire} data-value={JSON.stringify(data.value)}
+               title={`${data.wire} = ${formatValue(data.value)}`}
+               style={{ transform: `translate(-50%, -50%) translate(${labelX}px, ${labelY}px)` }}>
+            {shortValue(data.value, 30)}
+          </div>
+        </EdgeLabelRenderer>
+      )}
+    </>
+  );
+}
+
+const nodeTypes = { edit: EditNode };
+const edgeTypes = { live: LiveEdge };
+
+export default function StudioGraph({ graph, typesById, problems, positions, live, selected, onSelect, onMove,
+                                      onNodesChange, onConnect, onDisconnect }) {
+  const derived = useMemo(() => graph.nodes.map((node) => ({
+    id: node.name, type: "edit", position: positions[node.name] || { x: 0, y: 0 },
+    data: { node, type: typesById[node.type], problems: problems.filter((problem) => problem.node === node.name),
+            computed: live.computed.has(node.name), selected: selected === node.name },
+  })), [graph, typesById, problems, positions, live, selected]);
+  // React Flow measures nodes through change events: keep its measurements, take everything else from the graph
+  const [nodes, setNodes] = useState([]);
+  useEffect(() => setNodes((current) => {
+    const measured = Object.fromEntries(current.map((node) => [node.id, node.measured]));
+    return derived.map((node) => ({ ...node, measured: measured[node.id] }));
+  }), [derived]);
+  const changed = (changes) => {
+    setNodes((current) => applyNodeChanges(changes, current));
+    onNodesChange(changes);
+  };
+  const edges = useMemo(() => (graph.connections || []).map((connection) => {
+    const [source, sourcePort] = connection.src.split(".outputs:");
+    const [target, targetPort] = connection.dst.split(".inputs:");
+    const value = live.outputs[`${source}.${sourcePort}`];
+    return {
+      id: `${connection.src}->${connection.dst}`, source, target, sourceHandle: sourcePort, targetHandle: targetPort,
+      type: "live", data: { wire: `${source}.${sourcePort}`, value },
+    };
+  }), [graph, live]);
+  return (
+    <div className="gf-graph gf-studio-graph" data-testid="graph">
+      <ReactFlow nodes={nodes} edges={edges} nodeTypes={nodeTypes} edgeTypes={edgeTypes} fitView minZoom={0.1} proOptions={{ hideAttribution: true }}
+                 onNodeClick={(_event, node) => onSelect(node.id)}
+                 onNodeDragStop={(_event, node) => onMove(node.id, node.position)}
+                 onNodesChange={changed} onConnect={onConnect}
+                 onEdgesDelete={(deleted) => deleted.forEach((edge) => onDisconnect(edge.id))}
+                 deleteKeyCode={null}>
+        <Background gap={24} size={1} />
+        <Controls showInteractive={false} />
+      </ReactFlow>
+    </div>
+  );
+}
