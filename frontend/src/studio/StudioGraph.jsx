@@ -1,7 +1,7 @@
 // The graph being edited, in React Flow: one handle per port of the node's spec, connections only
 // between ports whose types the runtime lets connect (palette.connects is graphflow.types.can_connect),
 // problems marked on the node and port they name, live values on the wires and computed nodes lit.
-import React, { memo, useEffect, useMemo, useState } from "react";
+import React, { memo, useEffect, useMemo, useRef, useState } from "react";
 import { BaseEdge, Background, Controls, EdgeLabelRenderer, Handle, Position, ReactFlow, applyNodeChanges, getBezierPath } from "@xyflow/react";
 import { formatValue, shortValue } from "../data.js";
 
@@ -67,16 +67,25 @@ const edgeTypes = { live: LiveEdge };
 
 export default function StudioGraph({ graph, typesById, problems, positions, live, selected, onSelect, onMove,
                                       onNodesChange, onConnect, onDisconnect }) {
-  const derived = useMemo(() => graph.nodes.map((node) => ({
-    id: node.name, type: "edit", position: positions[node.name] || { x: 0, y: 0 },
-    data: { node, type: typesById[node.type], problems: problems.filter((problem) => problem.node === node.name),
-            computed: live.computed.has(node.name), selected: selected === node.name },
-  })), [graph, typesById, problems, positions, live, selected]);
+  // while a run streams, a node is rebuilt (and redrawn) only when something it shows changed
+  const previous = useRef({});
+  const derived = useMemo(() => graph.nodes.map((node) => {
+    const data = { node, type: typesById[node.type], problems: problems.filter((problem) => problem.node === node.name),
+                   computed: live.computed.has(node.name), selected: selected === node.name };
+    const position = positions[node.name] || { x: 0, y: 0 };
+    const last = previous.current[node.name];
+    if (last && last.position === position && Object.keys(data).every((key) => key === "problems"
+        ? last.data.problems.length === data.problems.length && last.data.problems.every((p, i) => p === data.problems[i])
+        : last.data[key] === data[key])) return last;
+    return (previous.current[node.name] = { id: node.name, type: "edit", position, data });
+  }), [graph, typesById, problems, positions, live, selected]);
   // React Flow measures nodes through change events: keep its measurements, take everything else from the graph
   const [nodes, setNodes] = useState([]);
   useEffect(() => setNodes((current) => {
     const measured = Object.fromEntries(current.map((node) => [node.id, node.measured]));
-    return derived.map((node) => ({ ...node, measured: measured[node.id] }));
+    const kept = Object.fromEntries(current.map((node) => [node.id, node]));
+    return derived.map((node) => (kept[node.id] && kept[node.id].data === node.data && kept[node.id].position === node.position
+      ? kept[node.id] : { ...node, measured: measured[node.id] }));
   }), [derived]);
   const changed = (changes) => {
     setNodes((current) => applyNodeChanges(changes, current));
