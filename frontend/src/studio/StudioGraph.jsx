@@ -91,14 +91,18 @@ export default function StudioGraph({ graph, typesById, problems, positions, liv
     setNodes((current) => applyNodeChanges(changes, current));
     onNodesChange(changes);
   };
+  const previousEdges = useRef({});
   const edges = useMemo(() => (graph.connections || []).map((connection) => {
+    const id = `${connection.src}->${connection.dst}`;
     const [source, sourcePort] = connection.src.split(".outputs:");
     const [target, targetPort] = connection.dst.split(".inputs:");
     const value = live.outputs[`${source}.${sourcePort}`];
-    return {
-      id: `${connection.src}->${connection.dst}`, source, target, sourceHandle: sourcePort, targetHandle: targetPort,
+    const last = previousEdges.current[id];
+    if (last && last.data.value === value) return last;   // same value object: the wire's label is unchanged
+    return (previousEdges.current[id] = {
+      id, source, target, sourceHandle: sourcePort, targetHandle: targetPort,
       type: "live", data: { wire: `${source}.${sourcePort}`, value },
-    };
+    });
   }), [graph, live]);
   return (
     <div className="gf-graph gf-studio-graph" data-testid="graph">
