@@ -133,3 +133,15 @@ def test_keys_pressed_in_the_page_drive_the_gantry_live(gantry):
     assert [value for _t, value in trace.series("y_target.value")][-1] == y_now
     statuses = {value for path in trace.gripper_paths for _t, value in trace.gripper_series(path, "status")}
     assert statuses & {"Closing", "Closed"}
+
+
+def test_the_page_reloads_the_graph_when_it_changes_on_disk(studio, studio_folder):
+    with browser() as chromium:
+        page = open_studio(chromium, studio)
+        page.wait_for_selector("body[data-watch-polls]")   # one watch poll has seen the file as opened
+        path = studio_folder / "counter.json"
+        data = json.loads(path.read_text())
+        data["nodes"].append({"name": "added_on_disk", "type": "omni.graph.nodes.Add"})
+        path.write_text(json.dumps(data, indent=2))
+        page.wait_for_selector(".react-flow__node[data-id='added_on_disk']", timeout=30000)
+        assert "reloaded" in page.inner_text("[data-testid=notice]")

@@ -37,26 +37,47 @@ export default function Studio({ config }) {
   const [notice, setNotice] = useState(null);
   const [conflict, setConflict] = useState(null);
   const [live, setLive] = useState(null);
+  const [dirty, setDirty] = useState(false);   // edits not saved: a change on disk is then a conflict, not a reload
+  const watched = useRef(null);
   const socket = useRef(null);
   const checkCount = useRef(0);
 
+  const load = useCallback(() => call(config, "GET", `/api/graph?path=${encodeURIComponent(config.file)}`).then((opened) => {
+    if (opened.http !== 200) return setNotice(opened.error);
+    setFile({ path: opened.path, data: opened.data, revision: opened.revision });
+    setProblems(opened.problems);
+    setPositions(startPositions(opened.data, opened.layout));
+    setDirty(false);
+  }), [config]);
+
   useEffect(() => {
     call(config, "GET", "/api/palette").then(setPalette);
-    if (config.file) {
-      call(config, "GET", `/api/graph?path=${encodeURIComponent(config.file)}`).then((opened) => {
-        if (opened.http !== 200) return setNotice(opened.error);
-        setFile({ path: opened.path, data: opened.data, revision: opened.revision });
-        setProblems(opened.problems);
-        setPositions(startPositions(opened.data, opened.layout));
-      });
-    }
-  }, [config]);
+    if (config.file) load();
+  }, [config, load]);
+
+  useEffect(() => {   // watch: the graph or its stage changed on disk -> reload it and re-run a live run
+    if (!file) return undefined;
+    const timer = setInterval(async () => {
+      const now = await call(config, "GET", `/api/revision?path=${encodeURIComponent(file.path)}`);
+      const stageChanged = watched.current !== null && watched.current !== now.stage;
+      watched.current = now.stage;
+      document.body.dataset.watchPolls = String(Number(document.body.dataset.watchPolls || 0) + 1);   // for tests
+      const graphChanged = now.revision !== file.revision;
+      if (!graphChanged && !stageChanged) return;
+      if (graphChanged && dirty) return setNotice("the file changed on disk; saving will show the difference");
+      if (graphChanged) await load();
+      setNotice(`reloaded: ${graphChanged ? "the graph" : "its stage"} changed on disk`);
+      if (socket.current && socket.current.readyState === WebSocket.OPEN) socket.current.send(JSON.stringify({ command: "reset" }));
+    }, 1000);
+    return () => clearInterval(timer);
+  }, [config, file, dirty, load]);
 
   const typesById = useMemo(() => Object.fromEntries((palette ? palette.types : []).map((type) => [type.id, type])), [palette]);
 
   const edit = useCallback((change) => {
     const data = change(structuredClone(file.data));
     setFile({ ...file, data });
+    setDirty(true);
     const count = ++checkCount.current;
     call(config, "POST", "/api/check", { path: file.path, data }).then((checked) => {
       if (count === checkCount.current) setProblems(checked.problems || [{ message: checked.error }]);
@@ -101,7 +122,10 @@ export default function Studio({ config }) {
       revision: options.path ? null : file.revision, replaceValid: Boolean(options.replaceValid) });
     setConflict(answer.http === 409 ? answer : null);
     if (answer.http === 200) {
-      if (!options.path) setFile((current) => ({ ...current, revision: answer.revision }));
+      if (!options.path) {
+        setFile((current) => ({ ...current, revision: answer.revision }));
+        setDirty(false);
+      }
       setNotice(`saved ${path}${answer.problems.length ? " (a draft: it does not validate)" : ""}`);
     } else if (answer.http !== 409) setNotice(answer.error);
     else setNotice(answer.status === "conflict" ? "not saved: the file changed on disk since it was opened"
