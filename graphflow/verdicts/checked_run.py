@@ -113,7 +113,7 @@ class ScriptedInputs:
                 sources.append(make(str(document.base_dir / value)))
             else:
                 sources.append(make(None, list(value)))
-        return cls(keys=sources[0], pad=sources[1])
+        return cls(keys=sources[0], pad=sources[1], topics=_scenario_topics(document))
 
     def attach(self, world) -> None:
         """Make the scripted devices services of *world* (they replace a window's or a browser's input)."""
@@ -129,6 +129,30 @@ class ScriptedInputs:
             from graphflow.ros2.bus import attach_transport
 
             attach_transport(world, self.topics)
+
+
+def _scenario_topics(document: GraphDocument):
+    """``scenario.topics``: a topics file (relative to the graph) or entries (``TOPIC@TIME=JSON`` or objects)."""
+    value = document.scenario.get("topics")
+    if value is None:
+        return None
+    from graphflow.ros2.timeline import ScriptedTopics, TopicSpecError, make_entry, parse_topic_spec, scripted_topics
+
+    if isinstance(value, str):
+        return scripted_topics(str(document.base_dir / value))
+    entries = []
+    for index, entry in enumerate(value):
+        where = f"{document.source}: scenario/topics/{index}"
+        if isinstance(entry, str):
+            entries.append(parse_topic_spec(entry))
+            continue
+        unknown = sorted(set(entry) - {"topic", "time", "message", "type"})
+        missing = sorted({"topic", "time", "message"} - set(entry))
+        if unknown or missing:
+            raise TopicSpecError(f"{where}: " + (f"missing {', '.join(missing)}" if missing else
+                                                 f"unknown {', '.join(unknown)} (an entry has topic, time, message, type)"))
+        entries.append(make_entry(entry["topic"], entry["time"], entry["message"], entry.get("type"), where=where))
+    return ScriptedTopics(entries)
 
 
 @dataclass(frozen=True)
