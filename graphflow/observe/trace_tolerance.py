@@ -49,9 +49,9 @@ class Bound:
 UNITS = {"positions": " m", "angles": " rad", "forces": " N", "values": ""}
 
 # Measured on the tuned pick-and-place (docs/trace.md): one ulp added to every IK solution moves positions by
-# at most 4.2e-9 m, quaternion components by 4.6e-7 and the held cube's grip force by 2.7e-6 N; a cube start
-# 6e-8 m off moves positions by 6e-8 m; a 1 % heavier cube moves the cube's position by 7.8e-7 m, its
-# quaternion by 7.7e-6 and the grip force by up to 3.2e-3 N. The defaults sit between.
+# at most 4.2e-9 m and quaternion components by 4.6e-7; a cube start 6e-8 m off moves positions by 6e-8 m;
+# a 1 % heavier cube moves the cube's position by 7.8e-7 m and its quaternion by 7.7e-6. The defaults sit between.
+# A stiff hold's force is a solver result: one ulp moves the 3.3 mN hold force by 2.7e-6 N, a 1 % heavier cube by 3e-5 N.
 DEFAULT_BOUNDS = {"positions": Bound(1e-7), "angles": Bound(2e-6),
                   "forces": Bound(1e-4, 1e-3), "values": Bound(1e-9, 1e-9)}
 
@@ -227,12 +227,10 @@ class _State:
     def __init__(self, trace: Trace):
         self.outputs = dict(trace.header.get("outputs", {}))
         self.grippers: dict[str, dict] = {}
-        self.poses = {body["path"]: body.get("pose") for body in trace.header.get("scene", {}).get("bodies", [])}
         self.phases = list(trace.header.get("phases", []))
 
     def apply(self, record: Mapping[str, Any]) -> set[str]:
-        changed = {f"poses.{path}" for path in record.get("poses", {})}
-        self.poses.update(record.get("poses", {}))
+        changed = set()
         for key, value in record.get("outputs", {}).items():
             self.outputs[key] = value
             changed.add(f"outputs.{key}")
@@ -242,8 +240,6 @@ class _State:
         return changed
 
     def value(self, key: str):
-        if key.startswith("poses."):
-            return self.poses.get(key[len("poses."):], _ABSENT)
         if key.startswith("outputs."):
             return self.outputs.get(key[len("outputs."):], _ABSENT)
         path, _, name = key[len("grippers."):].rpartition(".")
@@ -263,9 +259,8 @@ def tolerant_difference(left: Trace, right: Trace, tolerances: Tolerances = Tole
     headers = [{key: same_path_text(value) if key == "graph" else value for key, value in trace.header.items()
                 if key not in HEADER_FIELDS_IGNORED and key != "outputs"} for trace in (left, right)]
     for key in list(headers[0]) + [k for k in headers[1] if k not in headers[0]]:
-        found = _numbers_differ(headers[0].get(key, _ABSENT), headers[1].get(key, _ABSENT), tolerances.kinds["positions"])
-        if found is not None:   # the scene's start poses and shapes are lengths; the rest is exact
-            return Divergence(0, None, key + found[0], found[1], found[2])
+        if headers[0].get(key, _ABSENT) != headers[1].get(key, _ABSENT):
+            return Divergence(0, None, key, headers[0].get(key, _ABSENT), headers[1].get(key, _ABSENT))
     kinds = output_kinds(left.header)
     states = _State(left), _State(right)
     found = _compare_fields(states, set(f"outputs.{key}" for key in states[0].outputs) |
@@ -274,14 +269,12 @@ def tolerant_difference(left: Trace, right: Trace, tolerances: Tolerances = Tole
         return Divergence(0, None, *found, phase="", grippers=())
     for left_record, right_record in zip(left.ticks, right.ticks):
         tick, time = left_record.get("tick", 0), left_record.get("t")
-        for key in ("tick", "t", "pulses", "log", "computed"):
+        for key in ("tick", "t", "pulses", "log"):
             if left_record.get(key, []) != right_record.get(key, []):
                 return _at(states[0], tick, time, key, left_record.get(key, []), right_record.get(key, []))
-        for key, kind in (("topics", "values"), ("rays", "positions")):   # ray origins and hit distances: m
-            found = _numbers_differ(left_record.get(key, []), right_record.get(key, []), tolerances.kinds[kind])
-            if found is not None:
-                return _at(states[0], tick, time, f"{key}{found[0]}", found[1], found[2],
-                           f"{kind} tolerance {tolerances.kinds[kind].text(UNITS[kind])}")
+        topics = _numbers_differ(left_record.get("topics", []), right_record.get("topics", []), tolerances.kinds["values"])
+        if topics is not None:
+            return _at(states[0], tick, time, f"topics{topics[0]}", topics[1], topics[2], "values tolerance")
         changed = states[0].apply(left_record) | states[1].apply(right_record)
         found = _compare_fields(states, changed, kinds, tolerances)
         if found is not None:
@@ -304,11 +297,6 @@ def _compare_fields(states, keys, kinds: Mapping[str, str], tolerances: Toleranc
     """(field, left, right, bound text) of the first field (sorted) that differs beyond its tolerance."""
     for key in sorted(keys):
         left, right = states[0].value(key), states[1].value(key)
-        if key.startswith("poses."):   # a body's [x, y, z, qx, qy, qz, qw]: a position, then a quaternion
-            found = _pose_differs(key, left, right, tolerances)
-            if found is not None:
-                return found
-            continue
         if key.startswith("outputs."):
             name, kind = key[len("outputs."):], kinds.get(key[len("outputs."):], "values")
         else:
@@ -325,14 +313,3 @@ def _compare_fields(states, keys, kinds: Mapping[str, str], tolerances: Toleranc
             return key + found[0], found[1], found[2], "" if exact else f"{label} {bound.text(UNITS[kind])}"
     return None
 
-
-def _pose_differs(key: str, left, right, tolerances: Tolerances):
-    if not isinstance(left, list) or not isinstance(right, list) or len(left) != 7 or len(right) != 7:
-        return None if left == right else (key, left, right, "")
-    for start, stop, kind in ((0, 3, "positions"), (3, 7, "angles")):
-        bound, label = tolerances.bound(key[len("poses."):], kind)
-        found = _numbers_differ(left[start:stop], right[start:stop], bound)
-        if found is not None:
-            index = int(found[0].strip("[]")) + start
-            return f"{key}[{index}]", found[1], found[2], f"{label} {bound.text(UNITS[kind])}"
-    return None

@@ -144,12 +144,12 @@ def test_golden_pick_place_survives_one_ulp_and_catches_a_one_percent_heavier_cu
     document = load_document(GOLDEN_SCENARIO)
     heavier = CheckedRun(document, variant=make_variant(document, [parse_set("/World/Cube.physics:mass=0.101")])).run()
     assert len(heavier.failures) == 1
-    named = re.search(r"trace matches golden/tuned_pick_place.jsonl': measured (\S+) at tick (\d+) .* phase (\w+)",
+    # the first field beyond tolerance, named with its tick and phase: the hold's force or the cube's pose
+    found = re.search(r"trace matches golden/tuned_pick_place.jsonl': measured (\S+) at tick (\d+) .* phase (\w+)",
                       heavier.failures[0])
-    assert named is not None, heavier.failures[0]
-    field, tick, phase = named.groups()
-    assert field.startswith(("grippers./World/ur10/ee_link/SurfaceGripper_01.", "outputs.cube_pose.", "poses./World/Cube"))
-    assert int(tick) > 400 and phase in ("lift", "move_to_place")   # the cube differs once it is carried
+    assert found, heavier.failures[0]
+    assert found[1] in ("grippers./World/ur10/ee_link/SurfaceGripper_01.force", "outputs.cube_pose.orientation[0]",
+                        "outputs.cube_pose.position[2]") and found[3] in ("lift", "move_to_place")
     solve = kinematics.SerialChain.inverse
 
     def one_ulp_off(self, *args, **kwargs):   # what another libm or BLAS might give: the last bit of every joint
@@ -158,19 +158,3 @@ def test_golden_pick_place_survives_one_ulp_and_catches_a_one_percent_heavier_cu
 
     monkeypatch.setattr(kinematics.SerialChain, "inverse", one_ulp_off)
     assert run_checked(GOLDEN_SCENARIO).failures == []
-
-
-def test_body_poses_compare_position_then_quaternion_within_their_bounds():
-    def with_poses(poses_by_tick) -> str:
-        lines = trace_text([0.1] * len(poses_by_tick)).splitlines()
-        records = [json.loads(line) for line in lines[1:]]
-        for record, pose in zip(records, poses_by_tick):
-            record["poses"] = {"/B": pose}
-        return "\n".join([lines[0], *map(json.dumps, records)]) + "\n"
-
-    pose = [0.1, 0.2, 0.3, 0.0, 0.0, 0.0, 1.0]
-    near = [0.1 + 5e-8, 0.2, 0.3, 1e-6, 0.0, 0.0, 1.0]                 # within 1e-7 m and 2e-6
-    assert diff(with_poses([pose, pose]), with_poses([pose, near])) is None
-    turned = [0.1, 0.2, 0.3, 0.0, 0.0, 3e-6, 1.0]
-    found = diff(with_poses([pose, pose]), with_poses([pose, turned]))
-    assert (found.tick, found.field, found.bound) == (2, "poses./B[5]", "angles tolerance 2e-06 rad")
