@@ -73,9 +73,9 @@ def _socket_rate(server: _Server, graph, ticks: int) -> float:
         while json.loads(socket.recv(timeout=120))["type"] != "start":
             pass
         socket.send(json.dumps({"command": "speed", "value": None}))
+        frames = [(time.perf_counter(), 0)]   # from sending play to receiving the frame past TICKS: the page's view
         socket.send(json.dumps({"command": "play"}))
-        frames = []
-        while not frames or frames[-1][1] < ticks:
+        while frames[-1][1] < ticks:
             message = json.loads(socket.recv(timeout=120))
             if message["type"] == "frame" and message["tick"] > 0:
                 frames.append((time.perf_counter(), message["tick"]))
@@ -97,12 +97,12 @@ def _page_rate(browser, server: _Server, ticks: int) -> float:
     page = _open_live(browser, server)
     frames = page.evaluate("""async (ticks) => {
         const bar = () => document.querySelector('[data-testid=live-bar]');
-        const seen = [];
+        const seen = [[performance.now() / 1000, Number(bar().dataset.tick)]];
         document.querySelector('[data-action=play]').click();
         await new Promise((resolve) => {
           new MutationObserver(() => {
             const tick = Number(bar().dataset.tick);
-            if (tick > 0 && (!seen.length || seen[seen.length - 1][1] !== tick)) seen.push([performance.now() / 1000, tick]);
+            if (seen[seen.length - 1][1] !== tick) seen.push([performance.now() / 1000, tick]);
             if (tick >= ticks) resolve();
           }).observe(bar(), { attributes: true });
         });

@@ -145,3 +145,19 @@ def test_the_page_reloads_the_graph_when_it_changes_on_disk(studio, studio_folde
         path.write_text(json.dumps(data, indent=2))
         page.wait_for_selector(".react-flow__node[data-id='added_on_disk']", timeout=30000)
         assert "reloaded" in page.inner_text("[data-testid=notice]")
+
+
+def test_the_report_mode_of_the_shared_bundle_requests_nothing_from_the_network(tmp_path):
+    """The bundle holds the studio's API calls too; opened as a report it must still load nothing."""
+    report = tmp_path / "counter.html"
+    made = subprocess.run([sys.executable, "-m", "graphflow", "run", str(GRAPHS / "counter_branch_print.json"),
+                           "--report", str(report)], capture_output=True, text=True)
+    assert made.returncode == 0, made.stderr
+    with browser() as chromium:
+        page = chromium.new_page()
+        requested = []
+        page.on("request", lambda request: requested.append(request.url))
+        page.goto(report.as_uri())
+        page.wait_for_function("window.graphflowReport !== undefined", timeout=30000)
+        page.wait_for_selector(".react-flow__edge", timeout=30000)
+    assert [url for url in requested if not url.startswith(("file:", "data:", "blob:"))] == []
