@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import Any, Iterable, Sequence
 
 from graphflow.document import GraphDocument, load_document
-from graphflow.errors import BadInput
+from graphflow.errors import BadInput, raise_if_interrupted
 from graphflow.executor import GraphRuntimeError
 from graphflow.seeding import seed_everything
 from graphflow.verdicts.checks import CheckEvaluator
@@ -221,6 +221,7 @@ class CheckedRun:
             return self.simulation
         world = self.variant.create_world(gui=self.gui) if self.variant is not None else None
         self.simulation = Simulation(self.document, world=world, gui=self.gui)
+        raise_if_interrupted()   # a Ctrl-C during the stage load that usd-core's C++ swallowed
         self.inputs.attach(self.simulation.world)
         for listener in (*self.listeners, self.evaluator):
             self.simulation.add_listener(listener)
