@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import difflib
 import math
-from typing import Any
+from typing import Any, TypeGuard
 
 import networkx as nx
 
@@ -264,5 +264,5 @@ def _data_cycles(graph: nx.DiGraph, names: list[str]) -> list[list[str]]:
     return sorted(cycles)
 
 
-def _is_number(value) -> bool:
+def _is_number(value: object) -> TypeGuard[float]:
     return isinstance(value, (int, float)) and not isinstance(value, bool)

@@ -151,7 +151,8 @@ def _locate_problem(text: str) -> str | None:
         return f"invalid JSON at line {line} column {column}" + (f" ({label})" if label else "") + f": {reason}"
 
     while True:
-        position = _WHITESPACE.match(text, position).end()
+        blank = _WHITESPACE.match(text, position)
+        position = blank.end() if blank is not None else position
         if position >= len(text):
             return None
         char = text[position]
@@ -168,7 +169,7 @@ def _locate_problem(text: str) -> str | None:
             position += 1
             continue
         if char == '"':
-            value, end = json.decoder.scanstring(text, position + 1)
+            value, end = json.decoder.scanstring(text, position + 1)  # type: ignore[attr-defined]  # not in typeshed
             if not _encodes(value):
                 shown = value.encode("utf-8", "backslashreplace").decode("ascii", "backslashreplace")[:60]
                 return found(position, f"lone surrogate escape in the string \"{shown}\"")

@@ -27,29 +27,32 @@ class RunResult:
 
 
 def create_world(stage=None, *, time_step: float | None = None, substeps: int | None = None, gui: bool = False,
-                 base_dir=None) -> World:
+                 base_dir=None, description=None) -> World:
     """The one world factory: a ``ClockWorld`` without a stage, else the stage on PyBullet.
 
-    *stage*: a path (relative to *base_dir*), ``asset:NAME`` or an open ``Usd.Stage``;
+    *stage*: a path (relative to *base_dir*), ``asset:NAME`` or an open ``Usd.Stage``; *description*: that
+    open stage already parsed (the preflight's), so it is not parsed again;
     *time_step* None = the stage's own rate, or ``DEFAULT_TIME_STEP`` without a stage.
     """
     if stage is None:
         return ClockWorld(DEFAULT_TIME_STEP if time_step is None else time_step)
-    from graphflow import (
-        physics,  # only here: core-only graphs never import pybullet or pxr
-    )
+    from graphflow import physics  # only here: core-only graphs never import pybullet or pxr
     from graphflow.usd.resolver import resolve_stage
 
     if isinstance(stage, (str, os.PathLike)):
         stage = resolve_stage(os.fspath(stage), base_dir)
-    return physics.create_world(stage, time_step=time_step, substeps=substeps, gui=gui)
+    return physics.create_world(stage, time_step=time_step, substeps=substeps, gui=gui, description=description)
 
 
-def create_world_for(document: GraphDocument, *, gui: bool = False) -> World:
-    """The world a document asks for (its settings' stage, time step and substeps)."""
+def create_world_for(document: GraphDocument, *, gui: bool = False, parsed=None) -> World:
+    """The world a document asks for (its settings' stage, time step and substeps).
+
+    *parsed*: the document's stage as the preflight opened and parsed it (``validate.preflight.ParsedStage``).
+    """
     settings = document.settings
-    return create_world(settings.get("stage"), time_step=settings.get("timeStep"),
-                        substeps=settings.get("substeps"), gui=gui, base_dir=document.base_dir)
+    stage = settings.get("stage") if parsed is None else parsed.usd_stage
+    return create_world(stage, time_step=settings.get("timeStep"), substeps=settings.get("substeps"), gui=gui,
+                        base_dir=document.base_dir, description=None if parsed is None else parsed.description)
 
 
 class Listener(Protocol):

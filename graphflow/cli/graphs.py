@@ -38,7 +38,8 @@ def register(commands) -> None:
         "validate", help="check graph files and the stages they name without running them; print every problem")
     validate.add_argument("graphs", nargs="+", metavar="GRAPH")
     validate.add_argument("--allow-missing-assets", action="store_true",
-                          help="report inputs naming prims of layers the import could not open as warnings, not errors")
+                          help="a reference, payload or sublayer of the stage that cannot be opened, and inputs naming "
+                               "prims of such layers, are warnings, not errors")
     validate.set_defaults(handler=command_validate)
 
     nodes = commands.add_parser("nodes", help="list the registered node types")
@@ -51,6 +52,9 @@ def register(commands) -> None:
 
     new = commands.add_parser("new", help="write a starter graph")
     new.add_argument("name", help="file name (.json is added if missing)")
+    new.add_argument("--stage", metavar="ROBOT",
+                     help="also write NAME.usda, a cell around a packaged robot (ur10), and make NAME.json its "
+                          "pick-and-place graph with checks")
     new.add_argument("--force", action="store_true", help="overwrite an existing file")
     new.set_defaults(handler=command_new)
 
@@ -65,14 +69,24 @@ def register(commands) -> None:
 
 
 def command_validate(args) -> int:
+    from graphflow.usd.opening import missing_layers_refused
+
+    with missing_layers_refused(not args.allow_missing_assets):
+        return _validate(args.graphs, args.allow_missing_assets)
+
+
+def _validate(graphs: list[str], allow_missing_assets: bool) -> int:
     from graphflow.validate.preflight import file_problems
     from graphflow.validate.stage_names import deep_validate
 
     failed = False
-    for path in args.graphs:
-        problems, warnings_ = file_problems(path), []
+    for path in graphs:
+        document, problems, warnings_ = _scenario_table(path)   # a table: its graph with the table's checks
+        if document is None and not problems:
+            problems = file_problems(path)
+            document = None if problems else load_document(path)
         if not problems:   # the graph and its stage load: check what the graph names on that stage
-            problems, warnings_ = deep_validate(load_document(path), allow_missing_assets=args.allow_missing_assets)
+            problems, warnings_ = deep_validate(document, allow_missing_assets=allow_missing_assets)
         for problem in warnings_:
             print(f"warning: {problem}", file=sys.stderr)
         for problem in problems:
@@ -81,6 +95,23 @@ def command_validate(args) -> int:
             print(f"{path}: ok")
         failed = failed or bool(problems)
     return EXIT_BAD_INPUT if failed else EXIT_OK
+
+
+def _scenario_table(path: str):
+    """(its graph with the table's checks, [], []) for a scenario table, (None, problems, []) for a table that
+    cannot be used, (None, [], []) for any other file."""
+    from graphflow.files import FileProblem, read_json
+    from graphflow.verdicts.cases import graph_with_checks, is_table, load_table
+
+    try:
+        if not is_table(read_json(path)):
+            return None, [], []
+        cases = load_table(path)
+    except FileProblem:
+        return None, [], []   # file_problems says what is wrong with it
+    except BadInput as error:
+        return None, error.lines(), []
+    return graph_with_checks(cases[0].graph, cases[0].checks), [], []
 
 
 def command_nodes(args) -> int:
@@ -127,9 +158,23 @@ def first_sentence(text: str) -> str:
 
 
 def command_new(args) -> int:
+    from graphflow.catalog.schema import write_schema
+    from graphflow.cli.editing import SCHEMA_FILE
+
     target = Path(args.name if args.name.endswith(".json") else f"{args.name}.json")
-    save_document(parse_document(json.loads(json.dumps(STARTER_GRAPH)), str(target)), target, force=args.force)
+    if args.stage:
+        from graphflow.build.starters import write_cell
+
+        stage, _ = write_cell(target, args.stage, force=args.force)
+        print(f"wrote {stage}")
+    else:
+        starter = {"$schema": SCHEMA_FILE, **json.loads(json.dumps(STARTER_GRAPH))}
+        save_document(parse_document(starter, str(target)), target, force=args.force)
     print(f"wrote {target}")
+    schema = target.parent / SCHEMA_FILE
+    if not schema.exists():   # what "$schema" names, for editors; refresh it with graphflow schema -o --force
+        write_schema(schema)
+        print(f"wrote {schema}")
     return EXIT_OK
 
 

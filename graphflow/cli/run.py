@@ -47,13 +47,18 @@ def register(commands) -> None:
                      help="override (repeatable): NODE.INPUT=VALUE (a node input) or /Prim/Path.attribute=VALUE "
                           "(a stage attribute, in USD units); VALUE is JSON or a plain string (docs/sweeps.md)")
     run.add_argument("--randomize", metavar="FILE",
-                     help="draw the randomize entries of FILE (a sweep file or {\"randomize\": [...]}) from --seed")
+                     help="draw the randomize entries of FILE (a sweep file, {\"randomize\": [...]}, or a graph's "
+                          "scenario section) from --seed")
     run.add_argument("--log-level", default="warning", choices=["debug", "info", "warning", "error"],
                      help="Python logging level on stderr (default warning)")
     run.add_argument("--trace", metavar="FILE", help="write what happens every tick as JSON Lines (docs/trace.md)")
+    run.add_argument("--report", metavar="FILE.html",
+                     help="write a self-contained HTML report of the run: graph, scene, lanes, verdict (docs/report.md)")
+    run.add_argument("--report-timings", action="store_true",
+                     help="put per-node wall-clock compute times in the report (it is then no longer byte-identical)")
     run.add_argument("--record", metavar="FILE", help="record a video: .gif, .mp4 (needs ffmpeg) or a folder of PNG frames")
     run.add_argument("--fps", type=arguments.positive_float, default=15.0, help="video frames per simulated second (default 15)")
-    run.add_argument("--force", action="store_true", help="overwrite existing --trace / --record outputs")
+    run.add_argument("--force", action="store_true", help="overwrite existing --trace / --record / --report outputs")
     run.add_argument("--size", type=arguments.size, default=(480, 360), metavar="WxH",
                      help="video size in pixels (default 480x360)")
     run.add_argument("--camera-target", type=arguments.point, metavar="X,Y,Z",
@@ -101,6 +106,8 @@ def command_run(args) -> int:
         _check_recording(args, document)
     if args.trace:
         refuse_existing(args.trace, args.force)
+    if args.report:
+        refuse_existing(args.report, args.force)
     inputs = _scripted_inputs(args, document)
     variant = variant_for_run(document, args.set, args.randomize, seed)
     changed = _changed_by_options(args)
@@ -122,8 +129,12 @@ def command_run(args) -> int:
 
             recording = ros2_run.attach_topics(simulation.world, None, args.record_topics)
             outputs.push(lambda kind, _error, _trace: recording.abandon() if kind is not None else recording.close())
-        if args.trace:
-            _open_trace(args.trace, simulation, args.graph, outputs, args.force, variant.drawn)
+        trace_stream = _open_trace(args.trace, outputs, args.force) if args.trace else None
+        report = _start_report(args, simulation, trace_stream, variant.drawn)
+        if trace_stream is not None and report is None:
+            from graphflow.observe.trace import TraceRecorder
+
+            TraceRecorder(simulation, trace_stream, graph=args.graph, randomized=variant.drawn)
         if args.record:
             simulation.world.services.add(_start_recording(args, simulation.world, outputs))
         if args.gui and args.speed > 0:
@@ -131,6 +142,8 @@ def command_run(args) -> int:
         simulation.add_listener(Progress(simulation, sys.stdout.isatty(), checked.tick_limit()))
         started = time.perf_counter()
         verdict = checked.run()
+        if report is not None:
+            _write_report(args, report, checked, seed)
     for line in verdict.failures:
         print(line, file=sys.stderr)
     summary = verdict.summary()
@@ -173,13 +186,30 @@ def _start_recording(args, world, outputs: contextlib.ExitStack):
     return video
 
 
-def _open_trace(path: str, simulation, graph: str, outputs: contextlib.ExitStack, force: bool, randomized=()):
-    from graphflow.observe.trace import TraceRecorder
+def _start_report(args, simulation, trace_stream, randomized=()):
+    """The run's report recording (graphflow.report), teed to the --trace file when both are asked for."""
+    if not args.report:
+        return None
+    from graphflow.report.recording import ReportRecording
 
+    return ReportRecording(simulation, args.graph, also_to=trace_stream, timings=args.report_timings,
+                           randomized=randomized)
+
+
+def _write_report(args, report, checked, seed: int) -> None:
+    from graphflow.report.recording import drawn_randomization, runtime_failure
+    from graphflow.variants.randomize import load_randomization
+
+    drawn = drawn_randomization(load_randomization(args.randomize).draw(seed)) if args.randomize else {}
+    report.write(args.report, checked.document, evaluator=checked.evaluator, runtime_failure=runtime_failure(checked),
+                 seed=seed, overrides=args.set, randomization=drawn, force=args.force)
+    print(f"wrote {args.report}", file=sys.stderr)
+
+
+def _open_trace(path: str, outputs: contextlib.ExitStack, force: bool):
     temporary = outputs.enter_context(atomic_output(path, force=force))
     try:
         stream = outputs.enter_context(open(temporary, "w", encoding="utf-8", newline="\n"))
     except OSError as error:
         raise BadInput(f"{path}: cannot write the trace: {error.strerror}") from None
-    TraceRecorder(simulation, stream, graph=graph, randomized=randomized)
     return stream

@@ -24,8 +24,16 @@ def register(commands) -> None:
     stage.add_argument("--json", action="store_true", help="print one JSON object")
     stage.add_argument("--simulate", type=arguments.seconds, metavar="SECONDS",
                        help="step the stage with drives at their targets and report how far bodies moved")
-    stage.set_defaults(handler=lambda args: run_stage_command(args.stage, as_json=args.json,
-                                                              simulate_seconds=args.simulate))
+    stage.add_argument("--allow-missing-assets", action="store_true",
+                       help="a reference, payload or sublayer that cannot be opened is a warning, not a failure")
+    stage.set_defaults(handler=command_stage)
+
+
+def command_stage(args) -> int:
+    from graphflow.usd.opening import missing_layers_refused
+
+    with missing_layers_refused(not args.allow_missing_assets):
+        return run_stage_command(args.stage, as_json=args.json, simulate_seconds=args.simulate)
 
 
 def run_stage_command(stage_path: str, as_json: bool, simulate_seconds: float | None) -> int:
@@ -85,6 +93,8 @@ def print_stage_report(report: dict, simulation: dict | None) -> None:
     for articulation in report["articulations"]:
         print(f"  {articulation['path']}: {len(articulation['bodies'])} bodies, movable joints "
               + (", ".join(articulation["movable_joints"]) or "none"))
+        if articulation["undriven_joints"]:
+            print("    without a drive (free): " + ", ".join(articulation["undriven_joints"]))
     print(f"surface grippers: {len(report['surface_grippers'])}")
     for gripper in report["surface_grippers"]:
         print(f"  {gripper['path']}: {len(gripper['attachment_points'])} attachment points")
@@ -93,9 +103,15 @@ def print_stage_report(report: dict, simulation: dict | None) -> None:
     print(f"unsupported prims: {len(report['unsupported'])}")
     for item in report["unsupported"]:
         print(f"  {item['path']}: {item['reason']}")
+    print(f"ignored (other simulators' authoring): {len(report['ignored'])}")
+    for item in report["ignored"]:
+        print(f"  {item['path']}: {item['what']}")
     if simulation is not None:
         worst = simulation["max_displacement"]
-        print(f"simulated {simulation['seconds']:g} s ({simulation['steps']} steps), drives at their targets")
+        free = sum(len(articulation["undriven_joints"]) for articulation in report["articulations"])
+        held = ("no drives: every joint free" if not simulation["drive_errors"] else "drives at their targets"
+                + (f"; {free} joints without a drive free" if free else ""))
+        print(f"simulated {simulation['seconds']:g} s ({simulation['steps']} steps), {held}")
         if worst["path"] is not None:
             print(f"  largest displacement of a free body: {worst['path']} moved {worst['distance'] * 1000:.2f} mm")
         for path, distance in simulation["displacements"].items():

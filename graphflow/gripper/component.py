@@ -126,7 +126,7 @@ class SurfaceGripperComponent:
             if held:
                 self.reason = f"released {', '.join(held)} by Open"
             elif not self.reason:   # a force break or failed close already says why nothing is held
-                self.reason = "close cancelled by Open"
+                self.reason = "close cancelled by Open" + self._miss_details()   # with how far each ray missed
             self.update_open()
             self._set(GripperStatus.OPEN)
             self.retry_active = False
@@ -260,7 +260,7 @@ class SurfaceGripperComponent:
                 broken = f"coaxial force {coaxial:.1f} N > limit {coaxial_limit:g} N"
             elif shear_limit > 0 and shear_squared > shear_limit * shear_limit:
                 broken = f"shear force {math.sqrt(shear_squared):.1f} N > limit {shear_limit:g} N"
-            elif force_limit > 0 and (total := _norm(attachments.force_on_gripper(handle, False))) > force_limit:
+            elif force_limit > 0 and (total := self.checked_force(handle)) > force_limit:
                 broken = f"force {total:.1f} N > limit {force_limit:g} N"
             elif torque_limit > 0 and (torque := _norm(attachments.torque_on_gripper(handle))) > torque_limit:
                 broken = f"torque {torque:.1f} N m > limit {torque_limit:g} N m"
@@ -273,6 +273,12 @@ class SurfaceGripperComponent:
                 self.events.force_breaks += 1
 
     # -- queries --
+
+    def checked_force(self, handle) -> float:
+        """|F| on the gripper as its limits see it (N): the whole force for a legacy ``forceLimit`` (the springs'
+        share included: the legacy joint breaks on it), else the rigid rows' (what the coaxial and shear
+        limits split)."""
+        return _norm(self.world.attachments.force_on_gripper(handle, self.properties.force_limit <= 0))
 
     def gripped_objects(self) -> list[str]:
         """Objects held by executed attachments, each once, sorted (Isaac returns an unordered set)."""
@@ -310,9 +316,13 @@ class SurfaceGripperComponent:
         """Why a close ended Open without a command or a force break: the retry window and every empty ray."""
         retry = self.properties.retry_interval
         prefix = f"close failed: retry interval {retry:g} s elapsed" if retry > 0 else "close failed"
+        return prefix + self._miss_details()
+
+    def _miss_details(self) -> str:
+        """"; <joint>: no surface within <reach> m (nearest hit ...)" for every empty ray since the close, or ""."""
         missed = [self.points[i].joint_path for i in sorted(self.inactive) if self.points[i].joint_path in self.misses]
         if not missed:
-            return prefix
+            return ""
         details = []
         for joint_path in missed[:REASON_POINTS_LISTED]:
             miss = self.misses[joint_path]
@@ -327,7 +337,7 @@ class SurfaceGripperComponent:
                     else f"nothing within {PROBE_RANGE:g} m")
             details.append(f"{joint_path}: no surface within {reach:.4f} m ({seen})")
         more = len(missed) - REASON_POINTS_LISTED
-        return f"{prefix}; " + "; ".join(details) + (f"; and {more} more attachment points" if more > 0 else "")
+        return "; " + "; ".join(details) + (f"; and {more} more attachment points" if more > 0 else "")
 
     def _nearest_hit(self, origin, direction) -> tuple[str, float] | None:
         """What the ray would hit beyond its reach and how far along it: (prim, m), or None within PROBE_RANGE."""

@@ -92,8 +92,12 @@ __all__ = ["create_world", "StageError", "UnsupportedPrimWarning",
            "PyBulletWorld", "RayHit", "Contact", "ATTRIBUTES"]
 
 
-def create_world(stage=None, *, time_step: float | None = None, substeps: int | None = None, gui: bool = False):
-    """Load a stage (path or ``Usd.Stage``; None = empty world) into a new PyBullet world."""
+def create_world(stage=None, *, time_step: float | None = None, substeps: int | None = None, gui: bool = False,
+                 description=None):
+    """Load a stage (path or ``Usd.Stage``; None = empty world) into a new PyBullet world.
+
+    *description*: the open stage's ``StageDescription`` when it was parsed already (not parsed again).
+    """
     from graphflow.physics.world import PyBulletWorld
     from graphflow.usd.description import StageDescription
     from graphflow.usd.physics_import import load_description, open_stage
@@ -105,7 +109,9 @@ def create_world(stage=None, *, time_step: float | None = None, substeps: int | 
     if isinstance(stage, str) and stage.startswith("asset:"):
         stage = resolve_stage(stage)
     usd_stage, _label = open_stage(stage)
-    return PyBulletWorld(load_description(usd_stage), usd_stage, time_step=time_step, substeps=substeps, gui=gui)
+    if description is None:
+        description = load_description(usd_stage)
+    return PyBulletWorld(description, usd_stage, time_step=time_step, substeps=substeps, gui=gui)
 
 
 def __getattr__(name):

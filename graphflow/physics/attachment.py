@@ -56,6 +56,7 @@ from typing import Sequence
 
 import pybullet
 
+from graphflow.physics.support import supports_relieve
 from graphflow.poses import (
     AXIS_VECTORS,
     Pose,
@@ -212,6 +213,8 @@ class PyBulletAttachments:
             if (value <= axis.lower and along < 0.0) or (value >= axis.upper and along > 0.0):
                 continue
             force = [force[i] - along * direction[i] for i in range(3)]
+        if rigid_rows_only:
+            force = supports_relieve(self.bullet, hold.gripper, hold.target, force)
         share = 1.0 / len(hold.members)
         return force[0] * share, force[1] * share, force[2] * share
 

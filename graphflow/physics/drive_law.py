@@ -57,14 +57,16 @@ def motor_velocity(drive, target_position: float, target_velocity: float, joint_
     return velocity
 
 
-def drive_efforts(drives, targets, positions, velocities, inertia: np.ndarray, load: np.ndarray,
-                  dt: float) -> tuple[np.ndarray, np.ndarray]:
+def drive_efforts(drives, targets, positions, velocities, inertia: np.ndarray, load: np.ndarray, dt: float,
+                  held=None) -> tuple[np.ndarray, np.ndarray]:
     """(joint efforts, predicted joint accelerations) for one step of length *dt*, in USD joint coordinates.
 
     *drives*: per DOF a ``DriveSpec`` or None (no drive, or a motor drives it); *targets*: the
     articulation's ``DriveTargets`` (target positions and velocities, feed-forward efforts set by
     nodes); *positions*, *velocities*: joint state now; *inertia*: the joint-space inertia matrix;
-    *load*: the joints' gravity load.
+    *load*: the joints' gravity load; *held*: per DOF the acceleration a motor imposes on it, or None
+    for a DOF the torques move. A motor-held joint is not free: left free in the solve, the
+    neighbours' loads leak into it (the UR5e's wrist_1 predicted at 71 rad/s^2 while its motor held it).
     """
     count = len(velocities)
     residual = np.zeros(count)
@@ -81,7 +83,8 @@ def drive_efforts(drives, targets, positions, velocities, inertia: np.ndarray, l
         residual[dof] = k * (error - dt * velocity) + d * (targets.velocities[dof] - velocity)
         implicit[dof] = dt * d + dt * dt * k
     feed_forward = np.asarray(targets.efforts, dtype=float)
-    acceleration = np.linalg.solve(inertia + np.diag(implicit), residual + feed_forward + load)
+    solve = _HeldSolve(inertia, held)
+    acceleration = solve(np.diag(implicit), residual + feed_forward + load)
     efforts = residual - implicit * acceleration
     clamped = False
     for dof, drive in enumerate(drives):
@@ -92,5 +95,27 @@ def drive_efforts(drives, targets, positions, velocities, inertia: np.ndarray, l
             clamped = True
     efforts += feed_forward
     if clamped:     # a saturated drive: the joints accelerate under the forces actually applied
-        acceleration = np.linalg.solve(inertia, efforts + load)
+        acceleration = solve(0.0, efforts + load)
     return efforts, acceleration
+
+
+class _HeldSolve:
+    """Solves (M + D) a = f for the free DOFs with the held DOFs' accelerations given: M_ff a_f = f_f - M_fh a_h."""
+
+    def __init__(self, inertia: np.ndarray, held):
+        self.inertia = inertia
+        if held is None or all(a is None for a in held):
+            self.free = None
+            return
+        self.free = np.array([a is None for a in held])
+        self.held = np.array([0.0 if a is None else a for a in held])
+        self.coupled = inertia[np.ix_(self.free, ~self.free)] @ self.held[~self.free]
+
+    def __call__(self, implicit, force: np.ndarray) -> np.ndarray:
+        matrix = self.inertia + implicit
+        if self.free is None:
+            return np.linalg.solve(matrix, force)
+        acceleration = self.held.copy()
+        free = self.free
+        acceleration[free] = np.linalg.solve(matrix[np.ix_(free, free)], force[free] - self.coupled)
+        return acceleration

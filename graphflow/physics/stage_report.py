@@ -38,12 +38,15 @@ def stage_report(description: StageDescription, unsupported) -> dict:
         "articulations": [{"path": a.path, "bodies": sorted(a.bodies),
                            "joints": sorted(a.joints),
                            "movable_joints": sorted(j for j in a.joints
-                                                    if description.joints[j].kind in ("revolute", "prismatic"))}
+                                                    if description.joints[j].kind in ("revolute", "prismatic")),
+                           "undriven_joints": sorted(j for j in a.joints if description.joints[j].drive is None
+                                                     and description.joints[j].kind in ("revolute", "prismatic"))}
                           for a in description.articulations],
         "surface_grippers": [{"path": g.path, "attachment_points": list(g.attachment_points)}
                              for g in description.surface_grippers],
         "attachment_joints": sorted(description.attachment_joints),
         "unsupported": [{"path": path, "reason": reason} for path, reason in unsupported],
+        "ignored": [{"path": path, "what": what} for path, what in description.ignored],
     }
 
 

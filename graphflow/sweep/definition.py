@@ -33,7 +33,6 @@ from graphflow.variants.randomize import (
 SWEEP_FORMAT = "graphflow-sweep"
 EPISODES_JSONL, EPISODES_CSV = "episodes.jsonl", "episodes.csv"
 SUMMARY_CSV, SUMMARY_JSON, MANIFEST = "summary.csv", "summary.json", "sweep.json"
-WILSON_Z = 1.959963984540054   # the 97.5 % quantile of the standard normal: a two-sided 95 % interval
 
 
 class SweepError(BadInput):

@@ -10,27 +10,47 @@ every kind, in one pass.
 from __future__ import annotations
 
 import os
+import warnings
+from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from graphflow.document import GraphDocument, GraphError, Problem, load_document
 from graphflow.files import FileProblem, read_json
 
 
-def stage_problems(source: str, stage: str, base_dir: str | os.PathLike) -> list[Problem]:
-    """The problems ``run`` would find loading *stage* (a ``settings.stage`` value of the file *source*)."""
-    import warnings
+@dataclass(frozen=True)
+class ParsedStage:
+    """A stage opened and parsed once by the preflight, handed on to the world built for the same run."""
 
+    usd_stage: Any
+    description: Any
+
+
+def parse_stage(source: str, stage: str, base_dir: str | os.PathLike, *,
+                quiet: bool = True) -> tuple[list[Problem], ParsedStage | None]:
+    """Open and parse *stage* (a ``settings.stage`` value of the file *source*): (problems, the parsed stage).
+
+    *quiet* keeps the parser's unsupported-prim warnings to itself (``validate``); a run shows them, once.
+    """
     from graphflow.usd.errors import StageError
-    from graphflow.usd.physics_import import load_description
+    from graphflow.usd.physics_import import load_description, open_stage
     from graphflow.usd.resolver import resolve_stage
 
     try:
         with warnings.catch_warnings():
-            warnings.simplefilter("ignore")    # unsupported prims are simulated without; not a problem
-            load_description(resolve_stage(stage, base_dir))
+            if quiet:
+                warnings.simplefilter("ignore")    # unsupported prims are simulated without; not a problem
+            usd_stage, _label = open_stage(resolve_stage(stage, base_dir))
+            description = load_description(usd_stage)
     except StageError as error:
-        return stage_error_problems(source, error)
-    return []
+        return stage_error_problems(source, error), None
+    return [], ParsedStage(usd_stage, description)
+
+
+def stage_problems(source: str, stage: str, base_dir: str | os.PathLike) -> list[Problem]:
+    """The problems ``run`` would find loading *stage* (a ``settings.stage`` value of the file *source*)."""
+    return parse_stage(source, stage, base_dir)[0]
 
 
 def stage_error_problems(source: str, error) -> list[Problem]:
@@ -65,14 +85,15 @@ def _authored_stage(path) -> str | None:
     return settings.get("stage") if isinstance(settings, dict) else None
 
 
-def document_problems(document: GraphDocument) -> list[Problem]:
-    """What ``validate`` refuses in a loaded document (its stage, then what it names there); ``run``'s preflight."""
+def document_problems(document: GraphDocument, *, quiet: bool = True) -> tuple[list[Problem], ParsedStage | None]:
+    """What ``validate`` refuses in a loaded document (its stage, then what it names there), and the stage as
+    parsed: ``run``'s preflight, which hands the parsed stage to its world so the stage is read once."""
     from graphflow.validate.stage_names import deep_validate
 
-    stage = document.settings.get("stage")
+    stage, parsed = document.settings.get("stage"), None
     if isinstance(stage, str) and stage:
-        problems = stage_problems(document.source, stage, document.base_dir)
+        problems, parsed = parse_stage(document.source, stage, document.base_dir, quiet=quiet)
         if problems:
-            return problems
+            return problems, None
     # inputs naming prims of layers the import could not open do not stop a run: their node fails at its first compute
-    return deep_validate(document, allow_missing_assets=True)[0]
+    return deep_validate(document, allow_missing_assets=True, parsed=parsed)[0], parsed

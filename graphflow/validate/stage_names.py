@@ -20,6 +20,7 @@ import difflib
 import re
 import warnings
 from collections import deque
+from typing import Any
 
 from graphflow.document import GraphDocument, Problem
 from graphflow.registry import Registry, default_registry
@@ -61,12 +62,13 @@ def usd_syntax_error(message: str) -> str:
     return f"{found['file']}:{found['line']}:{found['column']}: {text}"
 
 
-def deep_validate(document: GraphDocument, registry: Registry | None = None, *,
-                  allow_missing_assets: bool = False) -> tuple[list[Problem], list[Problem]]:
+def deep_validate(document: GraphDocument, registry: Registry | None = None, *, allow_missing_assets: bool = False,
+                  parsed: Any = None) -> tuple[list[Problem], list[Problem]]:
     """(errors, warnings) of a loaded document: its stage references, then its exec wiring.
 
     Inputs the importer kept although their prim's layer could not be opened
-    (``settings.missingAssets``) are errors, or warnings with *allow_missing_assets*.
+    (``settings.missingAssets``) are errors, or warnings with *allow_missing_assets*. *parsed*: the
+    document's stage already opened and parsed (``validate.preflight.ParsedStage``), not read again.
     """
     registry = registry or default_registry()
     errors: list[Problem] = []
@@ -75,7 +77,7 @@ def deep_validate(document: GraphDocument, registry: Registry | None = None, *,
     reference = document.settings.get("stage")
     if reference is not None:
         skipped = {(problem.node, problem.attribute) for problem in missing}
-        errors.extend(problem for problem in _stage_problems(document, registry, reference)
+        errors.extend(problem for problem in _stage_problems(document, registry, reference, parsed)
                       if (problem.node, problem.attribute) not in skipped)
     warnings = _wiring_warnings(document, registry) + unset_target_warnings(document, registry)
     if not allow_missing_assets:
@@ -176,8 +178,9 @@ def _legacy_grippers(document: GraphDocument, registry) -> list[str]:
             for path in _paths(node.inputs.get("endEffectorPrim", ()))]
 
 
-def _stage_problems(document: GraphDocument, registry, reference: str) -> list[Problem]:
-    stage, problem = _open(document, reference)
+def _stage_problems(document: GraphDocument, registry, reference: str, parsed: Any = None) -> list[Problem]:
+    stage, problem = (_Stage(parsed.usd_stage, parsed.description), None) if parsed is not None \
+        else _open(document, reference)
     if problem is not None:
         return [problem]
     source, problems = document.source, []

@@ -239,11 +239,14 @@ def entry_problems(entry: Mapping[str, Any], where: str) -> list[str]:
 
 
 def load_randomization(path: str) -> Randomization:
-    """The ``randomize`` list of a sweep file or of a file holding only ``{"randomize": [...]}``."""
+    """The ``randomize`` list of a sweep file, of a file holding only ``{"randomize": [...]}``, or of a graph's
+    ``scenario`` section (a rate scenario's episodes re-run with ``--randomize`` naming the graph itself)."""
     try:
         data = read_json(path)
     except FileProblem as error:
         raise RandomizationError(str(error)) from None
+    if isinstance(data, dict) and data.get("format") == "graphflow":
+        data = {"randomize": data.get("scenario", {}).get("randomize", [])}
     errors = schema_errors(data, path, "randomizationFile")
     entries = data.get("randomize") if isinstance(data, dict) else None
     problems = [line for _path, line in errors]

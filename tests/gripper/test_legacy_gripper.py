@@ -207,3 +207,43 @@ def test_a_suction_point_inside_the_end_effector_reaches_from_where_the_ray_leav
         assert world.prim_pose(CUBE)[0][2] == pytest.approx(TIP[2] - 0.005 - CUBE_SIZE / 2, abs=1e-3)   # not pulled
     finally:
         world.close()
+
+
+def test_the_traced_force_is_the_force_the_limit_is_compared_with():
+    """Issue 26 item 4: a 1 kg cube hanging at rest from the legacy gripper (gravity on, kp = kd = 1e4): the
+    trace's gripper force is its weight, m g = 9.81 N, to 2 % (the trace showed the rigid rows only: ~1e-14 N
+    while the same grip broke on a 50 N force); then a 5 N limit breaks the grip with that force."""
+    from graphflow.observe.trace import sample_grippers
+
+    world = _ur10_world(1.0, gap=0.005)
+    try:
+        gripper = SurfaceGripper(EE, translate=0.1611, grip_threshold=0.01, kp=1.0e4, kd=1.0e4, disable_gravity=False)
+        gripper.initialize(world)
+        gripper.close()
+        _steps(world, gripper, 150, targets=_lift)          # lifted 0.35 rad off the pedestal, then still
+        assert gripper.gripped_objects() == [CUBE]
+        traced = sample_grippers(world)[gripper.gripper_path].force
+        assert traced == pytest.approx(1.0 * 9.81, rel=0.02)
+        gripper.manager.set_break_limits(gripper.gripper_path, 5.0, 1.0e4)
+        _steps(world, gripper, 1)
+        reason = gripper.manager.component(gripper.gripper_path).reason
+        assert not gripper.is_closed() and "broken by force 9.8 N > limit 5 N" in reason
+    finally:
+        world.close()
+
+
+def test_a_miss_cancelled_by_open_says_how_far_the_ray_missed():
+    """grip_threshold 1 mm, the cube's top 5 mm below the suction point: the close never grips; open() ends it
+    with the reach and the distance to the cube: the 5 mm gap (it said only "close cancelled by Open")."""
+    world = _ur10_world(0.1, gap=0.005)
+    try:
+        gripper = SurfaceGripper(EE, translate=0.1611, grip_threshold=0.001)
+        gripper.initialize(world)
+        gripper.close()
+        _steps(world, gripper, 5)
+        gripper.open()
+        reason = gripper.manager.component(gripper.gripper_path).reason
+        assert reason.startswith("close cancelled by Open; /ur10/ee_link/d6FixedJoint: no surface within 0.0010 m")
+        assert reason.endswith("(nearest hit /World/Cube at 0.0050 m)")
+    finally:
+        world.close()

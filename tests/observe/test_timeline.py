@@ -1,5 +1,6 @@
 """graphflow plot: the timeline carries the trace's series; missing ones are left out with a note."""
 import json
+import math
 import subprocess
 import sys
 from pathlib import Path
@@ -87,3 +88,15 @@ def test_plot_of_a_non_trace_is_bad_input(tmp_path):
     result = graphflow("plot", str(ROOT / "graphs" / "counter_branch_print.json"), "-o", str(tmp_path / "x.png"))
     assert result.returncode == 2
     assert "not a graphflow trace" in result.stderr
+
+
+def test_the_heavy_cube_timeline_shows_the_force_that_broke_the_legacy_grip(tmp_path):
+    """Issue 26 item 4: the tutorial's 30 kg cube (294 N) on the legacy gripper's 200 N force limit: the force
+    panel climbs past the limit to the break, as the run's reason says (it plotted ~1e-14 N before)."""
+    trace = tmp_path / "heavy.jsonl"
+    result = graphflow("run", str(ROOT / "graphs/scenarios/heavy_cube_breaks_grip.json"), "--trace", str(trace))
+    assert "broken by force" in result.stdout + result.stderr
+    data = timeline(read_trace(trace))
+    forces = lines_by_panel(timeline_figure(data, "heavy"))["force on the gripper's attachments"]
+    peak = max(value for value in forces["/World/ur10/ee_link/SurfaceGripper_01"][1] if math.isfinite(value))
+    assert 200.0 < peak < 2 * 294.3

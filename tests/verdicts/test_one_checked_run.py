@@ -126,3 +126,28 @@ def test_every_missing_extra_is_bad_input_with_its_install_line(tmp_path):
         assert result.returncode == 2, result.stderr
         assert result.stderr.count("\n") == 1 and f"pip install 'graphflow[{extra}]'" in result.stderr
 
+
+
+def test_a_run_reads_its_stage_once_so_each_warning_is_printed_once(tmp_path):
+    """The preflight's parse is handed to the world: usd-core's warnings about the stage appear once, not per read."""
+    (tmp_path / "scene.usda").write_text('''#usda 1.0
+(
+    upAxis = "Z"
+    metersPerUnit = 1
+)
+def PhysicsScene "physicsScene" {}
+def Xform "Ghost" (prepend apiSchemas = ["PhysicsRigidBodyAPI"])
+{
+    double3 xformOp:translate = (0, 0, 1)
+    uniform token[] xformOpOrder = ["xformOp:translate"]
+}
+''')
+    graph = {"format": "graphflow", "formatVersion": [1, 0], "settings": {"stage": "scene.usda", "duration": 0.05},
+             "nodes": [{"name": "tick", "type": "omni.graph.action.OnTick"}]}
+    (tmp_path / "graph.json").write_text(json.dumps(graph))
+    result = subprocess.run([sys.executable, "-m", "graphflow", "run", str(tmp_path / "graph.json")],
+                            capture_output=True, text=True, cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    lines = [line for line in result.stderr.splitlines() if line.strip()]
+    assert any("/Ghost" in line for line in lines), lines      # the stage's own problem is said...
+    assert len(lines) == len(set(lines)), lines                # ...and every line once
