@@ -8,6 +8,14 @@ Both also derive from the built-in class callers caught before this base existed
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:   # imported for the annotations only: this module loads first, before the Ctrl-C handler is in place
+    from collections.abc import Sequence
+    from importlib.abc import Loader
+    from importlib.machinery import ModuleSpec
+    from types import ModuleType
+
 EXIT_OK = 0
 EXIT_RUN_FAILED = 1
 EXIT_BAD_INPUT = 2
@@ -121,7 +129,7 @@ def raise_if_interrupted() -> None:
         raise KeyboardInterrupt
 
 
-def _on_interrupt(_signal_number, _frame) -> None:
+def _on_interrupt(_signal_number: int, _frame: object) -> None:
     _Interrupts.pending = True
     if not _Interrupts.deferred:
         raise KeyboardInterrupt
@@ -135,27 +143,27 @@ class _DeferWhileLoading:
     traceback on stderr and then lost. Noted instead, it is raised as soon as the import is done.
     """
 
-    depth = 0
-
-    def find_spec(self, name, path=None, target=None):
+    def find_spec(self, name: str, path: Sequence[str] | None = None, target: object = None) -> ModuleSpec | None:
         if name != "pxr" and not name.startswith("pxr."):
             return None
         from importlib.machinery import PathFinder
 
         spec = PathFinder.find_spec(name, path)
         if spec is not None and spec.loader is not None and hasattr(spec.loader, "exec_module"):
-            spec.loader = _DeferredLoader(spec.loader)
+            spec.loader = _DeferredLoader(spec.loader)  # type: ignore[assignment]  # a Loader by duck typing
         return spec
 
 
 class _DeferredLoader:
-    def __init__(self, loader):
+    """A pxr module's own loader, run with a Ctrl-C only noted (``_DeferWhileLoading``)."""
+
+    def __init__(self, loader: Loader):
         self.loader = loader
 
-    def create_module(self, spec):
+    def create_module(self, spec: ModuleSpec) -> ModuleType | None:
         return self.loader.create_module(spec)
 
-    def exec_module(self, module):
+    def exec_module(self, module: ModuleType) -> None:
         outermost = not _Interrupts.deferred
         _Interrupts.deferred = True
         try:
@@ -166,7 +174,7 @@ class _DeferredLoader:
         if outermost:
             raise_if_interrupted()
 
-    def __getattr__(self, name):
+    def __getattr__(self, name: str) -> object:
         return getattr(self.loader, name)
 
 

@@ -167,6 +167,13 @@ def load_sweep(path: str) -> Sweep:
     return Sweep(data, path, graph_data, str(graph_path))
 
 
+def check_sweep(sweep: Sweep) -> None:
+    """SweepError with every problem of a sweep built in memory (a rate scenario's), as ``load_sweep`` checks a file."""
+    problems = _problems(sweep, list(sweep.data.get("randomize", [])), set())
+    if problems:
+        raise SweepError("\n".join(problems))
+
+
 def _problems(sweep: Sweep, randomize: list, broken_entries: set) -> list[str]:
     """Every problem found before any episode runs: the graph, conflicting targets, each override, the metrics."""
     from graphflow.document import GraphError, parse_document
