@@ -124,6 +124,11 @@ def interrupted() -> bool:
     return _Interrupts.pending
 
 
+def interrupt_handled() -> None:
+    """The code that caught the ``KeyboardInterrupt`` finishes on purpose (a sweep keeps its episodes)."""
+    _Interrupts.pending = False
+
+
 def raise_if_interrupted() -> None:
     if _Interrupts.pending:
         raise KeyboardInterrupt
