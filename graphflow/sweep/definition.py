@@ -168,8 +168,9 @@ def load_sweep(path: str) -> Sweep:
 
 
 def check_sweep(sweep: Sweep) -> None:
-    """SweepError with every problem of a sweep built in memory (a rate scenario's), as ``load_sweep`` checks a file."""
-    problems = _problems(sweep, list(sweep.data.get("randomize", [])), set())
+    """Refuse a sweep built in memory (a rate scenario's) as a sweep file is refused: every problem at once."""
+    randomize = sweep.data.get("randomize", [])
+    problems = _problems(sweep, randomize if isinstance(randomize, list) else [], set())
     if problems:
         raise SweepError("\n".join(problems))
 
