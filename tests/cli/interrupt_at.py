@@ -33,5 +33,6 @@ if limit == 0:
 
     atexit.register(lambda: print(f"events: {count}", file=sys.stderr))
 sys.argv = ["graphflow", *sys.argv[2:]]
+signal.signal(signal.SIGINT, signal.default_int_handler)   # as in a terminal (a background job inherits "ignore")
 sys.setprofile(hook)
 runpy.run_module("graphflow", run_name="__main__", alter_sys=True)
