@@ -88,7 +88,7 @@ def test_the_core_and_the_gripper_stand_on_the_world_interface_not_on_physics():
     assert not _reaches_physics(_module_graph(), "graphflow.testing.fake_world")
 
 
-APPLICATIONS = ("cli", "verdicts", "validate", "observe", "inputs", "testing", "catalog", "sweep", "variants")
+APPLICATIONS = ("cli", "verdicts", "validate", "observe", "inputs", "testing", "catalog", "sweep", "variants", "report")
 
 
 def test_the_engine_imports_no_application_folder():

@@ -41,19 +41,24 @@ def register(commands) -> None:
     run.add_argument("--record-topics", metavar="FILE.mcap",
                      help="write every message ROS 2 publisher nodes publish to an MCAP file (ROS 2 CDR encoding)")
     run.add_argument("--checks", action="store_true",
-                     help="evaluate the graph's checks even when --ticks, --seconds, --key(s), --gamepad, --pad or --gui "
-                          "change the run (by default they are evaluated only for the run as written)")
+                     help="evaluate the graph's checks even when --ticks, --seconds, --key(s), --gamepad, --pad, "
+                          "--topic(s) or --gui change the run (by default they are evaluated only for the run as written)")
     run.add_argument("--set", action="append", default=[], metavar="TARGET=VALUE",
                      help="override (repeatable): NODE.INPUT=VALUE (a node input) or /Prim/Path.attribute=VALUE "
                           "(a stage attribute, in USD units); VALUE is JSON or a plain string (docs/sweeps.md)")
     run.add_argument("--randomize", metavar="FILE",
-                     help="draw the randomize entries of FILE (a sweep file or {\"randomize\": [...]}) from --seed")
+                     help="draw the randomize entries of FILE (a sweep file, {\"randomize\": [...]}, or a graph's "
+                          "scenario section) from --seed")
     run.add_argument("--log-level", default="warning", choices=["debug", "info", "warning", "error"],
                      help="Python logging level on stderr (default warning)")
     run.add_argument("--trace", metavar="FILE", help="write what happens every tick as JSON Lines (docs/trace.md)")
+    run.add_argument("--report", metavar="FILE.html",
+                     help="write a self-contained HTML report of the run: graph, scene, lanes, verdict (docs/report.md)")
+    run.add_argument("--report-timings", action="store_true",
+                     help="put per-node wall-clock compute times in the report (it is then no longer byte-identical)")
     run.add_argument("--record", metavar="FILE", help="record a video: .gif, .mp4 (needs ffmpeg) or a folder of PNG frames")
     run.add_argument("--fps", type=arguments.positive_float, default=15.0, help="video frames per simulated second (default 15)")
-    run.add_argument("--force", action="store_true", help="overwrite existing --trace / --record outputs")
+    run.add_argument("--force", action="store_true", help="overwrite existing --trace / --record / --report outputs")
     run.add_argument("--size", type=arguments.size, default=(480, 360), metavar="WxH",
                      help="video size in pixels (default 480x360)")
     run.add_argument("--camera-target", type=arguments.point, metavar="X,Y,Z",
@@ -76,10 +81,9 @@ def _scripted_inputs(args, document):
 
     keys = scripted_keys(args.keys, args.key)
     pad = scripted_pad(args.gamepad, args.pad)
-    if not args.gui and keys is None and pad is None:
-        own = ScriptedInputs.of_document(document)
-        keys, pad = own.keys, own.pad
     topics = ros2_run.check_options(args.topics, args.topic, args.record_topics)
+    if not args.gui and keys is None and pad is None and topics is None:
+        return ScriptedInputs.of_document(document)   # the scenario's inputs are used whole or not at all
     return ScriptedInputs(keys=keys, pad=pad, topics=topics)
 
 
@@ -87,7 +91,7 @@ def _changed_by_options(args) -> list[str]:
     """The options that make this run differ from the graph's scenario, so its checks do not apply."""
     options = {"--ticks": args.ticks is not None, "--seconds": args.seconds is not None, "--keys": args.keys is not None,
                "--key": bool(args.key), "--gamepad": args.gamepad is not None, "--pad": bool(args.pad),
-               "--gui": args.gui}
+               "--topics": args.topics is not None, "--topic": bool(args.topic), "--gui": args.gui}
     return [name for name, given in options.items() if given]
 
 
@@ -102,6 +106,8 @@ def command_run(args) -> int:
         _check_recording(args, document)
     if args.trace:
         refuse_existing(args.trace, args.force)
+    if args.report:
+        refuse_existing(args.report, args.force)
     inputs = _scripted_inputs(args, document)
     variant = variant_for_run(document, args.set, args.randomize, seed)
     changed = _changed_by_options(args)
@@ -123,8 +129,12 @@ def command_run(args) -> int:
 
             recording = ros2_run.attach_topics(simulation.world, None, args.record_topics)
             outputs.push(lambda kind, _error, _trace: recording.abandon() if kind is not None else recording.close())
-        if args.trace:
-            _open_trace(args.trace, simulation, args.graph, outputs, args.force)
+        trace_stream = _open_trace(args.trace, outputs, args.force) if args.trace else None
+        report = _start_report(args, simulation, trace_stream, variant.drawn)
+        if trace_stream is not None and report is None:
+            from graphflow.observe.trace import TraceRecorder
+
+            TraceRecorder(simulation, trace_stream, graph=args.graph, randomized=variant.drawn)
         if args.record:
             simulation.world.services.add(_start_recording(args, simulation.world, outputs))
         if args.gui and args.speed > 0:
@@ -132,6 +142,8 @@ def command_run(args) -> int:
         simulation.add_listener(Progress(simulation, sys.stdout.isatty(), checked.tick_limit()))
         started = time.perf_counter()
         verdict = checked.run()
+        if report is not None:
+            _write_report(args, report, checked, seed)
     for line in verdict.failures:
         print(line, file=sys.stderr)
     summary = verdict.summary()
@@ -174,13 +186,30 @@ def _start_recording(args, world, outputs: contextlib.ExitStack):
     return video
 
 
-def _open_trace(path: str, simulation, graph: str, outputs: contextlib.ExitStack, force: bool):
-    from graphflow.observe.trace import TraceRecorder
+def _start_report(args, simulation, trace_stream, randomized=()):
+    """The run's report recording (graphflow.report), teed to the --trace file when both are asked for."""
+    if not args.report:
+        return None
+    from graphflow.report.recording import ReportRecording
 
+    return ReportRecording(simulation, args.graph, also_to=trace_stream, timings=args.report_timings,
+                           randomized=randomized)
+
+
+def _write_report(args, report, checked, seed: int) -> None:
+    from graphflow.report.recording import drawn_randomization, runtime_failure
+    from graphflow.variants.randomize import load_randomization
+
+    drawn = drawn_randomization(load_randomization(args.randomize).draw(seed)) if args.randomize else {}
+    report.write(args.report, checked.document, evaluator=checked.evaluator, runtime_failure=runtime_failure(checked),
+                 seed=seed, overrides=args.set, randomization=drawn, force=args.force)
+    print(f"wrote {args.report}", file=sys.stderr)
+
+
+def _open_trace(path: str, outputs: contextlib.ExitStack, force: bool):
     temporary = outputs.enter_context(atomic_output(path, force=force))
     try:
         stream = outputs.enter_context(open(temporary, "w", encoding="utf-8", newline="\n"))
     except OSError as error:
         raise BadInput(f"{path}: cannot write the trace: {error.strerror}") from None
-    TraceRecorder(simulation, stream, graph=graph)
     return stream

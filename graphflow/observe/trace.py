@@ -16,14 +16,15 @@ import sys
 from dataclasses import dataclass
 from importlib import metadata
 from pathlib import Path
-from typing import IO, Any, Iterator
+from typing import IO, Any, Iterator, Sequence
 
 from graphflow import __version__
 from graphflow.errors import BadInput
 from graphflow.types import ExecState
 
 TRACE_FORMAT = "graphflow-trace"
-TRACE_VERSION = 1
+TRACE_VERSION = 2            # 2 added the scene section (graphflow.observe.trace_scene); 1 is still read
+READABLE_VERSIONS = (1, 2)
 PHASE_OUTPUT = "eventName"   # an output with this name carries a controller's phase (PickPlaceController)
 
 _STATE_SUFFIX = {ExecState.ENABLED: "", ExecState.ENABLED_AND_PUSH: ":push",
@@ -119,11 +120,47 @@ def sample_grippers(world) -> dict[str, GripperSample]:
     return samples
 
 
-def initial_grippers(world) -> list[str]:
-    """The surface grippers that exist when a run starts: the stage's gripper prims and any a node made already."""
+def used_grippers(simulation) -> list[str]:
+    """The surface grippers the graph uses, as the run starts.
+
+    A gripper prim of the stage counts when a node input or a check names it (a packaged gripper the
+    graph never touches does not); a LegacySurfaceGripper node's own gripper counts from the start, at
+    the path it will author on its first execIn (the next free ``SurfaceGripper`` under its end
+    effector); a gripper a node already made counts. Grippers made later appear in tick records.
+    """
+    world = simulation.world
     description = getattr(world, "description", None)
-    on_stage = [gripper.path for gripper in getattr(description, "surface_grippers", ())]
-    return sorted(set(on_stage) | set(sample_grippers(world)))
+    on_stage = {gripper.path for gripper in getattr(description, "surface_grippers", ())}
+    document = simulation.document
+    named = {path for node in document.nodes for value in node.inputs.values() for path in _texts(value)}
+    named |= {check["gripper"] for check in document.checks if isinstance(check.get("gripper"), str)}
+    used = (on_stage & named) | set(sample_grippers(world))
+    stage = getattr(world, "stage", None)
+    planned: set[str] = set()
+    for node in simulation.instance.compiled.nodes:
+        if node.spec.id == LEGACY_GRIPPER and stage is not None:
+            for end_effector in _texts(dict(document.node(node.name).inputs).get("endEffectorPrim", ())):
+                path = _next_free(stage, end_effector.rstrip("/") + "/SurfaceGripper", planned)
+                planned.add(path)
+    return sorted(used | planned)
+
+
+LEGACY_GRIPPER = "graphflow.LegacySurfaceGripper"
+
+
+def _texts(value) -> list[str]:
+    if isinstance(value, str):
+        return [value]
+    return [item for item in value if isinstance(item, str)] if isinstance(value, (list, tuple)) else []
+
+
+def _next_free(stage, path: str, taken: set[str]) -> str:
+    """``usd_schema.next_free_path`` that also skips the paths other legacy nodes will take."""
+    candidate, index = path, 0
+    while stage.GetPrimAtPath(candidate) or candidate in taken:
+        index += 1
+        candidate = f"{path}_{index:02d}"
+    return candidate
 
 
 def _holding_force(manager, path: str) -> float | None:
@@ -138,12 +175,16 @@ class TraceRecorder:
 
     ``TraceRecorder(simulation, stream)`` writes the header and adds itself to the simulation's
     listeners: it collects exec pulses as nodes compute (``on_compute``) and writes each tick after
-    it ran (``on_tick``). The stream stays open: whoever opened it closes it.
+    it ran (``on_tick``). The stream stays open: whoever opened it closes it. *records*, a list, also
+    keeps every record as a dict (the run report reads them so, without encoding JSON every tick);
+    the stream may then be None.
     """
 
-    def __init__(self, simulation, stream: IO[str], *, graph: str | None = None):
+    def __init__(self, simulation, stream: IO[str] | None, *, graph: str | None = None, records: list | None = None,
+                 randomized: Sequence[dict] = ()):
         self.simulation = simulation
         self.stream = stream
+        self.records = records
         self.instance = simulation.instance
         self._pulses: list[str] = []
         self._outputs: dict[str, Any] = {}
@@ -151,8 +192,16 @@ class TraceRecorder:
         nodes = self.instance.compiled.nodes
         self._exec_names = [frozenset(a.name for a in node.spec.exec_outputs) for node in nodes]
         self._databases = [self.instance.database(node.name) for node in nodes]
+        self._slots: list | None = None
+        self._raw: dict[str, Any] = {}    # each output's value as last seen, to skip converting unchanged ones
         self._outputs = self._output_values()
-        self._write_header(graph)
+        from graphflow.observe.trace_scene import SceneSection
+
+        self._scene = SceneSection(simulation)
+        description = getattr(simulation.world, "description", None)
+        self._used_grippers = used_grippers(simulation)
+        self._unused = {g.path for g in getattr(description, "surface_grippers", ())} - set(self._used_grippers)
+        self._write_header(graph, list(randomized))
         simulation.add_listener(self)
 
     def on_compute(self, instance, node_name: str, fired: list[str], db) -> None:
@@ -168,13 +217,13 @@ class TraceRecorder:
         if self._pulses:
             record["pulses"] = self._pulses
             self._pulses = []
-        outputs = self._output_values()
-        changed = {key: value for key, value in outputs.items() if _changed(self._outputs.get(key, _MISSING), value)}
+        changed = self._changed_outputs()
         if changed:
             record["outputs"] = changed
-        self._outputs = outputs
         grippers = {}
         for path, sample in sample_grippers(self.simulation.world).items():
+            if path in self._unused:
+                continue    # a stage gripper the graph does not use
             fields = sample.fields()
             previous = self._grippers.get(path, {})
             delta = {key: value for key, value in fields.items() if _changed(previous.get(key, _MISSING), value)}
@@ -193,17 +242,38 @@ class TraceRecorder:
             logs.append({"node": event.node, "level": event.level, "message": event.message})
         if logs:
             record["log"] = logs[::-1]
-        self.stream.write(dumps_record(record) + "\n")
+        record.update(self._scene.record(surface_gripper_manager(self.simulation.world)))
+        self._emit(record)
+
+    def _emit(self, record: dict) -> None:
+        if self.records is not None:
+            self.records.append(record)
+        if self.stream is not None:
+            self.stream.write(dumps_record(record) + "\n")
 
     def _output_values(self) -> dict[str, Any]:
-        values = {}
-        for node, database, exec_names in zip(self.instance.compiled.nodes, self._databases, self._exec_names):
-            for name, value in database.outputs.__dict__.items():
-                if name not in exec_names:
-                    values[f"{node.name}.{name}"] = to_json_value(value)
-        return values
+        if self._slots is None:   # (outputs dict, name, "node.name") of every data output, found once
+            self._slots = [(database.outputs.__dict__, name, f"{node.name}.{name}")
+                           for node, database, exec_names in zip(self.instance.compiled.nodes, self._databases,
+                                                                 self._exec_names)
+                           for name in database.outputs.__dict__ if name not in exec_names]
+        return {key: to_json_value(outputs[name]) for outputs, name, key in self._slots}
 
-    def _write_header(self, graph: str | None) -> None:
+    def _changed_outputs(self) -> dict[str, Any]:
+        """Outputs whose written value changed; an immutable value equal to the last one is skipped unconverted."""
+        changed, written, raw_values = {}, self._outputs, self._raw
+        for outputs, name, key in self._slots:
+            raw = outputs[name]
+            previous = raw_values.get(key, _MISSING)
+            if type(previous) is type(raw) and _plain(raw) and (previous is raw or previous == raw):
+                continue
+            raw_values[key] = raw
+            value = to_json_value(raw)
+            if _changed(written.get(key, _MISSING), value):
+                changed[key] = written[key] = value
+        return changed
+
+    def _write_header(self, graph: str | None, randomized: list[dict]) -> None:
         document = self.simulation.document
         world = self.simulation.world
         compiled = self.instance.compiled
@@ -215,22 +285,43 @@ class TraceRecorder:
             "stage": document.settings.get("stage"),
             "timeStep": world.time_step,
             "nodes": {node.name: node.spec.id for node in compiled.nodes},
-            "outputs": self._outputs,
+            "outputs": dict(self._outputs),   # a copy: the recorder updates its own as outputs change
             "phases": phase_outputs(compiled),
-            "grippers": initial_grippers(world),
+            "grippers": self._used_grippers,
             "versions": loaded_versions(),
+            **self._scene.header(),
         }
-        self.stream.write(dumps_record(header) + "\n")
+        if randomized:   # only a randomized run has it, so other traces stay as they were
+            header["randomized"] = randomized
+        self._emit(header)
 
 
 _MISSING = object()
+_SCALARS = (float, int, str, bool, type(None))
+
+
+def _plain(value: Any) -> bool:
+    """Immutable and compared by value: a scalar, or a tuple of scalars (never a list or an array a node may mutate)."""
+    return type(value) in _SCALARS or (type(value) is tuple and all(type(item) in _SCALARS for item in value))
 
 
 def _changed(previous: Any, value: Any) -> bool:
     """Different as written to the trace (so a NaN that stays NaN is no change)."""
     if previous is _MISSING:
         return True
-    return previous != value and dumps_record(previous) != dumps_record(value)
+    return previous != value and not _same_but_nan(previous, value)
+
+
+def _same_but_nan(previous: Any, value: Any) -> bool:
+    """Unequal values that are written alike: NaN where the other has NaN (plain JSON values only)."""
+    if isinstance(previous, float) and isinstance(value, float):
+        return previous != previous and value != value
+    if isinstance(previous, list) and isinstance(value, list):
+        return len(previous) == len(value) and all(a == b or _same_but_nan(a, b) for a, b in zip(previous, value))
+    if isinstance(previous, dict) and isinstance(value, dict):
+        return list(previous) == list(value) and all(
+            previous[key] == value[key] or _same_but_nan(previous[key], value[key]) for key in previous)
+    return False
 
 
 # ---------------------------------------------------------------- reading
@@ -269,12 +360,20 @@ class Trace:
 
 def read_trace(path: str | Path) -> Trace:
     """Parse a trace file; raise TraceError naming the line when it is not a trace."""
-    from graphflow.files import FileProblem, loads_strict, read_text
+    from graphflow.files import FileProblem, read_text
 
     try:
-        lines = read_text(path).splitlines()   # regular files only: never reads /dev/zero forever
+        text = read_text(path)   # regular files only: never reads /dev/zero forever
     except FileProblem as error:
         raise TraceError(str(error)) from None
+    return parse_trace(text, path)
+
+
+def parse_trace(text: str, path: str | Path = "<trace>") -> Trace:
+    """A trace from its text (a file's, or one recorded in memory); TraceError naming the line."""
+    from graphflow.files import FileProblem, loads_strict
+
+    lines = text.splitlines()
     records = []
     for number, line in enumerate(lines, start=1):
         try:
@@ -290,8 +389,9 @@ def read_trace(path: str | Path) -> Trace:
         records.append(record)
     if not records or records[0].get("format") != TRACE_FORMAT:
         raise TraceError(f"{path}: not a graphflow trace (the first line must be a header with format {TRACE_FORMAT!r})")
-    if records[0].get("version") != TRACE_VERSION:
-        raise TraceError(f"{path}: trace version {records[0].get('version')!r} is not supported (this reads {TRACE_VERSION})")
+    if records[0].get("version") not in READABLE_VERSIONS:
+        raise TraceError(f"{path}: trace version {records[0].get('version')!r} is not supported "
+                         f"(this reads {', '.join(map(str, READABLE_VERSIONS))})")
     return Trace(records[0], records[1:])
 
 

@@ -48,7 +48,7 @@ def test_tick_records_hold_only_changes(tmp_path):
 
 def test_header_names_graph_stage_time_step_nodes_and_versions(tmp_path):
     header = read_trace(traced_run(tmp_path)).header
-    assert header["format"] == "graphflow-trace" and header["version"] == 1
+    assert header["format"] == "graphflow-trace" and header["version"] == 2
     assert header["graph"] == str(COUNTER_GRAPH)
     assert header["stage"] is None and header["timeStep"] == 0.5
     assert header["nodes"]["counter"] == "omni.graph.action.Counter"
