@@ -61,9 +61,13 @@ def _schema_problems(data: Any, source: str) -> list[Problem]:
     return problems
 
 
-def parse_document(data: Any, source: str = "<graph>", registry: Registry | None = None) -> GraphDocument:
-    """Build and check a document from parsed JSON (schema, then ``graphflow.compiler.compile``); raise GraphError listing every problem."""
-    problems = _schema_problems(data, source)
+def parse_document(data: Any, source: str = "<graph>", registry: Registry | None = None, *,
+                   schema_problems=None) -> GraphDocument:
+    """Build and check a document from parsed JSON (schema, then ``graphflow.compiler.compile``); raise GraphError listing every problem.
+
+    *schema_problems* replaces the whole-file schema check (``graphflow.build`` checks only the entries a call changed).
+    """
+    problems = (schema_problems or _schema_problems)(data, source)
     if problems:
         raise GraphError(problems + _problems_of_valid_parts(data, source, registry, problems))
     major = data["formatVersion"][0]

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import copy
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Iterator, Mapping, TypeVar, overload
 
@@ -257,14 +257,18 @@ class Graph:
     # ------------------------------------------------------------------ checking
 
     def _change(self, edit) -> None:
-        """Apply *edit* to a copy of the data; keep it only when the whole document still checks."""
+        """Apply *edit* to a copy of the data; keep it only when the whole document still checks.
+
+        The schema is checked on the entries the edit changed (the others passed it before), the
+        compiler on the whole document. The data is never changed in place, so the document may share it.
+        """
         data = copy.deepcopy(self._data)
         edit(data)
-        self._document = self._checked(data)
+        self._document = self._checked(data, _changed_entries_schema(self._data))
         self._data = data
 
-    def _checked(self, data: dict) -> GraphDocument:
-        return parse_document(copy.deepcopy(data), self.source, self.registry)
+    def _checked(self, data: dict, schema_problems=None) -> GraphDocument:
+        return parse_document(data, self.source, self.registry, schema_problems=schema_problems)
 
     def _find(self, name: str) -> dict | None:
         return next((entry for entry in self._data["nodes"] if entry["name"] == name), None)
@@ -288,6 +292,35 @@ class Graph:
 
     def _refuse(self, message: str, **where) -> None:
         raise GraphError([Problem(self.source, message, **where)])
+
+
+_SECTIONS = ("nodes", "connections", "variables", "checks")
+
+
+def _changed_entries_schema(before: dict):
+    """A schema check of only the section entries that differ from *before*, its problems at their real index."""
+    from graphflow.document import _schema_problems
+
+    def check(data: dict, source: str) -> list[Problem]:
+        reduced = {key: value for key, value in data.items() if key not in _SECTIONS}
+        positions = {}
+        for section in _SECTIONS:
+            if section in data:
+                old, new = before.get(section, []), data[section]
+                positions[section] = [i for i, entry in enumerate(new) if i >= len(old) or entry != old[i]]
+                reduced[section] = [new[i] for i in positions[section]]
+        reduced.setdefault("nodes", [])
+        return [_at_real_index(problem, positions) for problem in _schema_problems(reduced, source)]
+    return check
+
+
+def _at_real_index(problem: Problem, positions: dict) -> Problem:
+    path = problem.path
+    if len(path) < 2 or path[0] not in positions:
+        return problem
+    real = (path[0], positions[path[0]][path[1]], *path[2:])
+    shown = "/".join(str(part) for part in path)
+    return replace(problem, message="/".join(str(part) for part in real) + problem.message[len(shown):], path=real)
 
 
 def _set_list(data: dict, key: str, items: list) -> None:

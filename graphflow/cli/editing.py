@@ -71,14 +71,24 @@ def command_migrate(args) -> int:
 def register_assets(commands) -> None:
     assets = commands.add_parser("assets", help="list the asset roots stages can reference (@graphflow/ur10.usda@)")
     assets.add_argument("--json", action="store_true", help="print one JSON object: root name -> folder and files")
+    assets.add_argument("--link", metavar="FOLDER",
+                        help="put a link per root in FOLDER, for other USD tools (usdview, Kit): "
+                             "PXR_AR_DEFAULT_SEARCH_PATH=FOLDER")
+    assets.add_argument("--force", action="store_true", help="with --link: replace entries that are not links")
     assets.set_defaults(handler=command_assets)
 
 
 def command_assets(args) -> int:
     import json
+    from pathlib import Path
 
-    from graphflow.usd.asset_roots import asset_roots
+    from graphflow.usd.asset_roots import asset_roots, link_roots
 
+    if args.link:
+        for entry in link_roots(Path(args.link), force=args.force):
+            print(f"linked {entry} -> {asset_roots()[entry.name]}")
+        print(f"export PXR_AR_DEFAULT_SEARCH_PATH={Path(args.link).resolve()}")
+        return EXIT_OK
     roots = {name: {"folder": str(folder), "files": sorted(p.name for p in folder.glob("*.usd*"))}
              for name, folder in asset_roots().items()}
     if args.json:

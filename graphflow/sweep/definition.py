@@ -167,6 +167,14 @@ def load_sweep(path: str) -> Sweep:
     return Sweep(data, path, graph_data, str(graph_path))
 
 
+def check_sweep(sweep: Sweep) -> None:
+    """Refuse a sweep built in memory (a rate scenario's) as a sweep file is refused: every problem at once."""
+    randomize = sweep.data.get("randomize", [])
+    problems = _problems(sweep, randomize if isinstance(randomize, list) else [], set())
+    if problems:
+        raise SweepError("\n".join(problems))
+
+
 def _problems(sweep: Sweep, randomize: list, broken_entries: set) -> list[str]:
     """Every problem found before any episode runs: the graph, conflicting targets, each override, the metrics."""
     from graphflow.document import GraphError, parse_document

@@ -9,7 +9,7 @@ from __future__ import annotations
 import os
 
 from graphflow.files import read_json
-from graphflow.sweep.definition import Sweep, _check
+from graphflow.sweep.definition import Sweep, check_sweep
 from graphflow.sweep.launchers import LocalPool, RayPool
 from graphflow.verdicts.rates import RatePlan, RateVerdict
 
@@ -21,7 +21,7 @@ def scenario_sweep(plan: RatePlan):
             "randomize": graph_data.get("scenario", {}).get("randomize", []),
             "seeds": {"start": plan.seeds[0], "count": len(plan.seeds)}}
     sweep = Sweep(data, plan.path, graph_data, plan.path)
-    _check(sweep)   # SweepError (bad input) for a randomization that cannot be drawn or applied
+    check_sweep(sweep)   # SweepError (bad input) for a randomization that cannot be drawn or applied
     return sweep
 
 

@@ -74,13 +74,30 @@ def search_folder() -> Path:
     """A folder of links, one per root (removed when the process ends): the search path USD is given."""
     folder = Path(tempfile.mkdtemp(prefix="graphflow-asset-roots-"))
     atexit.register(_remove, folder, os.getpid())
+    link_roots(folder)
+    return folder
+
+
+def link_roots(folder: Path, *, force: bool = False) -> list[Path]:
+    """Put a link per asset root in *folder* (made if missing): a search path other USD tools can use too.
+
+    An entry already there is replaced only when it is a link, or with *force*.
+    """
+    folder.mkdir(parents=True, exist_ok=True)
+    made = []
     for name, root in asset_roots().items():
+        entry = folder / name
+        if entry.is_symlink() or (force and entry.exists()):
+            shutil.rmtree(entry) if entry.is_dir() and not entry.is_symlink() else entry.unlink()
+        elif entry.exists():
+            raise StageError(f"{entry}: exists and is not a link; not replacing it (use --force)")
         try:
-            (folder / name).symlink_to(root, target_is_directory=True)
+            entry.symlink_to(root, target_is_directory=True)
         except OSError as error:   # no links on this file system: copy the (small, text) assets instead
             log.debug("asset root %s copied, not linked: %s", name, error)
-            shutil.copytree(root, folder / name)
-    return folder
+            shutil.copytree(root, entry)
+        made.append(entry)
+    return made
 
 
 def _remove(folder: Path, owner: int) -> None:

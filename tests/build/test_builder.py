@@ -11,7 +11,7 @@ from graphflow.cli import main
 from graphflow.model import GraphError
 
 SHIPPED = sorted(GRAPHS.glob("*.json")) + sorted((GRAPHS / "scenarios").glob("*.json"))
-SHIPPED = [path for path in SHIPPED if "format" in json.loads(path.read_text())]   # not key / topic files
+SHIPPED = [path for path in SHIPPED if json.loads(path.read_text()).get("format") == "graphflow"]   # not key / topic files
 
 
 def counter_graph() -> Graph:

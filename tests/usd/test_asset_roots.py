@@ -2,6 +2,8 @@
 entry point, and graphflow new --stage ur10 writes a cell that passes its checks as written."""
 import json
 import logging
+import os
+import subprocess
 import sys
 
 import pytest
@@ -112,3 +114,22 @@ def test_new_stage_ur10_writes_a_cell_that_passes_its_checks_as_written(tmp_path
     assert main(["new", "project/cell", "--stage", "ur10"]) == 2   # never overwrites the user's cell
     assert main(["new", "project/other", "--stage", "panda"]) == 2
     assert "no starter cell for 'panda' (starters: ur10)" in capsys.readouterr().err
+
+
+def test_assets_link_makes_a_search_path_other_usd_tools_use(tmp_path, capsys):
+    folder = tmp_path / "usd-search"
+    assert main(["assets", "--link", str(folder)]) == 0
+    assert capsys.readouterr().out.splitlines()[-1] == f"export PXR_AR_DEFAULT_SEARCH_PATH={folder}"
+    stage_file = tmp_path / "cell.usda"
+    stage_file.write_text(CELL.replace("ASSET", "graphflow/ur10.usda"))
+    # a fresh process that never imports graphflow: plain usd-core with the environment variable
+    script = (f"from pxr import Usd; s = Usd.Stage.Open({str(stage_file)!r}); "
+              "print(s.GetPrimAtPath('/World/arm/ee_link/SurfaceGripper').IsValid())")
+    result = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                            env={**os.environ, "PXR_AR_DEFAULT_SEARCH_PATH": str(folder)})
+    assert result.stdout.strip() == "True", result.stderr
+    (folder / "graphflow").unlink()
+    (folder / "graphflow").mkdir()
+    assert main(["assets", "--link", str(folder)]) == 2
+    assert "exists and is not a link; not replacing it (use --force)" in capsys.readouterr().err
+    assert main(["assets", "--link", str(folder), "--force"]) == 0
