@@ -37,6 +37,8 @@ from dataclasses import dataclass, field, replace
 import pybullet
 
 from graphflow.physics.contacts import ROLLING_SHAPES, anchor_friction, plane_box
+from graphflow.physics.handles import ArticulationHandle, BodyHandle, BuiltScene, DriveSpec
+from graphflow.physics.tree import floating_root
 from graphflow.poses import (
     AXIS_VECTORS,
     IDENTITY_POSE,
@@ -46,9 +48,8 @@ from graphflow.poses import (
     quat_from_axis_angle,
     quat_multiply,
 )
-from graphflow.usd.description import Body, Joint, Shape, StageDescription
+from graphflow.usd.description import Body, Joint, Shape, StageDescription, joint_frame_offset
 from graphflow.usd.errors import StageError
-from graphflow.usd.physics_import import joint_frame_offset
 
 CONE_SEGMENTS = 24                 # a cone collider is the convex hull of this many base points and its apex
 CONSTRAINT_MAX_FORCE = 1.0e9       # joints between free bodies are rigid (see pybullet_notes §4 default quirk)
@@ -58,72 +59,6 @@ REVOLUTE_PIN_HALF_SPAN = 0.25      # m: a free revolute joint is two pins this f
 _AXIS_ALIGNMENT = {"X": quat_from_axis_angle((0.0, 1.0, 0.0), math.pi / 2.0),
                    "Y": quat_from_axis_angle((1.0, 0.0, 0.0), -math.pi / 2.0),
                    "Z": (0.0, 0.0, 0.0, 1.0)}
-
-
-@dataclass(frozen=True)
-class BodyHandle:
-    """Where a USD body lives in PyBullet and how its prim frame relates to the link's inertial frame."""
-
-    path: str
-    body_id: int
-    link: int                       # -1 for a base
-    kind: str                       # dynamic, kinematic, static
-    inertial_in_prim: Pose          # the PyBullet inertial (COM) frame expressed in the prim frame
-    mass: float                     # as built (the world keeps the live mass)
-    gravity_enabled: bool
-    articulation: str | None = None
-
-
-@dataclass(frozen=True)
-class DriveSpec:
-    """The drive of one articulation DOF as built (SI units); its targets are run-time state of the world."""
-
-    stiffness: float
-    damping: float
-    max_force: float
-    acceleration: bool
-    max_velocity: float | None = None     # the joint's physxJoint:maxJointVelocity, rad/s or m/s
-    lower: float = float("-inf")          # the joint's limits: targets beyond them are not pursued
-    upper: float = float("inf")
-
-    @classmethod
-    def for_joint(cls, joint: Joint) -> "DriveSpec":
-        drive = joint.drive
-        return cls(drive.stiffness, drive.damping, drive.max_force, drive.acceleration, joint.max_velocity,
-                   joint.lower, joint.upper)
-
-
-@dataclass(frozen=True)
-class ArticulationHandle:
-    path: str
-    body_id: int
-    fixed_base: bool
-    joint_paths: tuple[str, ...]          # movable joints in DOF order
-    joint_indices: tuple[int, ...]        # PyBullet joint index of each DOF
-    signs: tuple[float, ...]              # USD coordinate = sign * PyBullet coordinate
-    angular: tuple[bool, ...]
-    drives: tuple[DriveSpec | None, ...]
-    members: frozenset[str]               # root, body and joint prim paths
-
-    @property
-    def driven(self) -> bool:
-        return any(drive is not None for drive in self.drives)
-
-    @property
-    def joint_names(self) -> tuple[str, ...]:
-        return tuple(path.rsplit("/", 1)[-1] for path in self.joint_paths)
-
-
-@dataclass
-class BuiltScene:
-    """What one build made in the client (lookup tables), and the prims it could not build."""
-
-    bodies: dict[str, BodyHandle] = field(default_factory=dict)
-    by_id: dict[tuple[int, int], str] = field(default_factory=dict)
-    articulations: dict[str, ArticulationHandle] = field(default_factory=dict)
-    joint_dofs: dict[str, tuple[str, int]] = field(default_factory=dict)   # joint path -> (articulation, DOF)
-    constraints: dict[str, list[int]] = field(default_factory=dict)        # joint path -> constraint ids
-    unsupported: list[tuple[str, str]] = field(default_factory=list)       # (path, reason), beyond the import's
 
 
 class SceneBuilder:
@@ -315,7 +250,7 @@ class SceneBuilder:
         (free in space) a floating root. Extra joints to the world close loops: noted and dropped from *joints*."""
         world_joints = [j for j in joints if j.body0 is None or j.body1 is None]
         if not world_joints:
-            return _Tree(_floating_root(articulation, members, joints), False, None)
+            return _Tree(floating_root(articulation, members, joints), False, None)
         anchor_joint = world_joints[0]
         root_body = None
         if anchor_joint.kind == "fixed":
@@ -520,37 +455,6 @@ class _Links:
     dofs: list = field(default_factory=list)          # (link index, joint, sign) of each movable joint
     base_mass: float = 0.0
     base_inertial: Pose = IDENTITY_POSE
-
-
-def _floating_root(articulation, members: list[str], joints: list[Joint]) -> str:
-    """The base body of an articulation free in space.
-
-    usd-core's root prim when it is a body of the articulation (the ArticulationRootAPI body, or for an
-    API on an ancestor the body it picks: the krabby's chassis); otherwise the centre of the joint graph
-    (the body with the smallest largest hop count to any other body), ties broken by path.
-    """
-    for root in articulation.roots:
-        if root in members:
-            return root
-    if articulation.path in members:
-        return articulation.path
-    neighbours: dict[str, list[str]] = {body: [] for body in members}
-    for joint in joints:
-        if joint.body0 in neighbours and joint.body1 in neighbours:
-            neighbours[joint.body0].append(joint.body1)
-            neighbours[joint.body1].append(joint.body0)
-
-    def eccentricity(body: str) -> int:
-        hops, frontier = {body: 0}, [body]
-        while frontier:
-            current = frontier.pop(0)
-            for other in neighbours[current]:
-                if other not in hops:
-                    hops[other] = hops[current] + 1
-                    frontier.append(other)
-        return max(hops.values())
-
-    return min(sorted(members), key=eccentricity)
 
 
 def _cone_points(shape: Shape):

@@ -13,8 +13,8 @@ from dataclasses import dataclass
 import numpy as np
 import pybullet
 
-from graphflow.physics.builder import ArticulationHandle, BodyHandle
 from graphflow.physics.drive_law import MOTOR_MAX_FORCE, drive_efforts, motor_velocity
+from graphflow.physics.handles import ArticulationHandle, BodyHandle
 from graphflow.poses import quat_conjugate, quat_rotate
 from graphflow.usd.description import StageDescription
 

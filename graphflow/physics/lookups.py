@@ -7,7 +7,7 @@ cleared on every rebuild).
 """
 from __future__ import annotations
 
-from graphflow.physics.builder import ArticulationHandle, BodyHandle
+from graphflow.physics.handles import ArticulationHandle, BodyHandle
 from graphflow.poses import IDENTITY_POSE, Pose, compose, invert, relative
 from graphflow.world import WorldError
 

@@ -19,13 +19,14 @@ from pybullet_utils.bullet_client import BulletClient
 
 from graphflow.physics import attributes
 from graphflow.physics.attachment import WorldAttachments
-from graphflow.physics.builder import BuiltScene, SceneBuilder
+from graphflow.physics.builder import SceneBuilder
 from graphflow.physics.contacts import (
     SOLVER_RESIDUAL,
     internal_substeps,
     solver_iterations,
 )
 from graphflow.physics.drives import DriveTargets, GravitySwitches, JointControl
+from graphflow.physics.handles import BuiltScene
 from graphflow.physics.health import NonFiniteState, first_non_finite, health_plan
 from graphflow.physics.lookups import SceneLookups
 from graphflow.physics.native_output import native_stdout_silenced

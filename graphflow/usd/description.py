@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from graphflow.poses import IDENTITY_POSE, Pose, Quat, Vec3
+from graphflow.poses import AXIS_VECTORS, IDENTITY_POSE, Pose, Quat, Vec3, compose, relative, twist_angle
 
 SHAPE_KINDS = ("box", "sphere", "capsule", "cylinder", "cone", "plane", "convex_mesh", "triangle_mesh")
 JOINT_KINDS = ("fixed", "revolute", "prismatic", "spherical", "d6")
@@ -162,3 +162,29 @@ class StageDescription:
         """D6 joints excluded from articulation: the surface gripper's attachment points."""
         return {path: joint for path, joint in self.joints.items()
                 if joint.kind == "d6" and joint.exclude_from_articulation}
+
+
+def in_path_order(description: StageDescription) -> StageDescription:
+    """USD's parser works in parallel and returns prims in varying order; the world is built in
+    this order, and PyBullet's results depend on creation order, so sort everything by path."""
+    description.bodies = dict(sorted(description.bodies.items()))
+    for body in description.bodies.values():
+        body.shapes.sort(key=lambda shape: shape.path)
+    description.joints = dict(sorted(description.joints.items()))
+    description.articulations.sort(key=lambda articulation: articulation.path)
+    for articulation in description.articulations:
+        articulation.bodies.sort()
+        articulation.joints.sort()
+    description.surface_grippers.sort(key=lambda gripper: gripper.path)
+    description.unsupported.sort()
+    return description
+
+
+def joint_frame_offset(joint: Joint, pose0_world: Pose, pose1_world: Pose) -> float:
+    """The joint coordinate implied by two body poses (rad for revolute, m for prismatic)."""
+    frame0, frame1 = compose(pose0_world, joint.pose0), compose(pose1_world, joint.pose1)
+    offset = relative(frame0, frame1)
+    axis = AXIS_VECTORS[joint.axis]
+    if joint.kind == "revolute":
+        return twist_angle(offset[1], axis)
+    return sum(p * a for p, a in zip(offset[0], axis))

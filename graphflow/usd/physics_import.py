@@ -27,13 +27,9 @@ from graphflow.poses import (
     AXIS_VECTORS,
     Pose,
     compose,
-    quat_normalize,
     quat_rotate,
-    relative,
-    twist_angle,
 )
 from graphflow.usd.authored_values import (
-    inertia_on_triangle,
     joint_problems,
     mass_problems,
     round_collider_problems,
@@ -45,21 +41,20 @@ from graphflow.usd.description import (
     Body,
     Drive,
     Joint,
-    MassProperties,
     Material,
     Shape,
     StageDescription,
     SurfaceGripper,
+    in_path_order,
 )
 from graphflow.usd.errors import StageError, warn_unsupported
 from graphflow.usd.ignored import ignored_authoring
+from graphflow.usd.mass_properties import MassPropertiesMixin, quat_of
 
 DEFAULT_GRAVITY = 9.81                 # m/s^2, along minus the up axis
 IN_MEMORY = "<in-memory stage>"
 # A body with neither mass nor colliders is a frame (a converted MJCF site, a tool point): MuJoCo gives it no
 # mass; PyBullet needs some, so 1 g on a 1 cm sphere (2/5 m r^2), not the 1 kg that sagged converted arms
-FRAME_BODY_MASS = 1.0e-3               # kg
-FRAME_BODY_INERTIA = 0.4 * FRAME_BODY_MASS * 0.01 ** 2    # kg m^2
 
 
 def open_stage(stage_or_path):
@@ -104,12 +99,6 @@ def _parse_physics(stage):
         return parse(stage, ["/"])
 
 
-def _quat(gf_quat) -> tuple[float, float, float, float]:
-    """Gf quaternion (real, i, j, k) -> graphflow (x, y, z, w)."""
-    imaginary = gf_quat.GetImaginary()
-    return quat_normalize((float(imaginary[0]), float(imaginary[1]), float(imaginary[2]), float(gf_quat.GetReal())))
-
-
 def _enum_name(value) -> str:
     return str(value).rsplit(".", 1)[-1]
 
@@ -124,7 +113,7 @@ def _finite_or_inf(value: float) -> float:
     return float("inf") if not math.isfinite(value) or abs(value) >= 3.0e38 else value
 
 
-class _Importer:
+class _Importer(MassPropertiesMixin):
     def __init__(self, stage, label: str):
         from pxr import UsdGeom
 
@@ -159,7 +148,7 @@ class _Importer:
 
         matrix = Gf.Matrix4d(self.xform_cache.GetLocalToWorldTransform(prim))
         transform = Gf.Transform(matrix)
-        return (self._vec(transform.GetTranslation()), _quat(transform.GetRotation().GetQuat()))
+        return (self._vec(transform.GetTranslation()), quat_of(transform.GetRotation().GetQuat()))
 
     def _parent_rotation(self, prim):
         parent = prim.GetParent()
@@ -207,7 +196,7 @@ class _Importer:
         self.description.ignored = ignored_authoring(self.stage)
         for layer, reason in unit_mismatches(self.stage):
             self._unsupported(layer, reason)
-        return self._in_path_order(self.description)
+        return in_path_order(self.description)
 
     def _prim_problems(self) -> list[str]:
         """What no simulation can take, every one: negative or non-finite masses, the inertias, centres of
@@ -271,22 +260,6 @@ class _Importer:
             if self._attribute(self.stage.GetPrimAtPath(path), f"{prefix}:sleepThreshold") is not None:
                 self._unsupported(path, f"{prefix}:sleepThreshold is not simulated: bodies never sleep")
 
-    @staticmethod
-    def _in_path_order(description: StageDescription) -> StageDescription:
-        """USD's parser works in parallel and returns prims in varying order; the world is built in
-        this order, and PyBullet's results depend on creation order, so sort everything by path."""
-        description.bodies = dict(sorted(description.bodies.items()))
-        for body in description.bodies.values():
-            body.shapes.sort(key=lambda shape: shape.path)
-        description.joints = dict(sorted(description.joints.items()))
-        description.articulations.sort(key=lambda articulation: articulation.path)
-        for articulation in description.articulations:
-            articulation.bodies.sort()
-            articulation.joints.sort()
-        description.surface_grippers.sort(key=lambda gripper: gripper.path)
-        description.unsupported.sort()
-        return description
-
     def _gravity(self, scenes):
         up = AXIS_VECTORS.get(self.up_axis, AXIS_VECTORS["Z"])
         default = tuple(-DEFAULT_GRAVITY * c + 0.0 for c in up)
@@ -317,7 +290,7 @@ class _Importer:
     # -- shapes and bodies -----------------------------------------------------------
     def _shape(self, kind: str, desc, body_path: str | None) -> Shape | None:
         path = str(desc.primPath)
-        pose = (self._vec(desc.localPos), _quat(desc.localRot))
+        pose = (self._vec(desc.localPos), quat_of(desc.localRot))
         material = self.materials.get(str(desc.materials[0]), Material()) if len(desc.materials) else Material()
         common = dict(path=path, pose=pose, material=material, collision_enabled=bool(desc.collisionEnabled))
         if kind == "box":
@@ -373,7 +346,7 @@ class _Importer:
             prim = self.stage.GetPrimAtPath(path)
             enabled = bool(desc.rigidBodyEnabled)
             kind = "static" if not enabled else ("kinematic" if desc.kinematicBody else "dynamic")
-            pose = (self._vec(desc.position), _quat(desc.rotation))
+            pose = (self._vec(desc.position), quat_of(desc.rotation))
             body = Body(path=path, kind=kind, pose=pose)
             for shape_kind, shape_desc in shapes_by_body.get(path, []):
                 shape = self._shape(shape_kind, shape_desc, path)
@@ -389,82 +362,6 @@ class _Importer:
             body.linear_damping = float(self._attribute(prim, "physxRigidBody:linearDamping", body.linear_damping))
             body.angular_damping = float(self._attribute(prim, "physxRigidBody:angularDamping", body.angular_damping))
             description.bodies[path] = body
-
-    def _mass_properties(self, prim, body: Body) -> MassProperties:
-        """Mass, centre of mass and inertia by USD's precedence rules (MassAPI on body, colliders, materials).
-
-        With nothing authored, USD uses 1000 kg/m^3 (PhysX's default density too).
-        """
-        from pxr import Gf, UsdPhysics
-
-        shapes = {shape.path: shape for shape in body.shapes}
-        inverse_mpu = 1.0 / self.mpu
-
-        def mass_information(collider_prim):
-            info = UsdPhysics.RigidBodyAPI.MassInformation()
-            shape = shapes.get(str(collider_prim.GetPath()))
-            if shape is None:
-                info.volume = -1.0  # not a collider we simulate: contributes nothing
-                return info
-            volume, inertia, center = _unit_density_properties(shape)
-            info.volume = volume * inverse_mpu ** 3
-            info.inertia = Gf.Matrix3f(inertia[0] * inverse_mpu ** 5, 0, 0, 0, inertia[1] * inverse_mpu ** 5, 0,
-                                       0, 0, inertia[2] * inverse_mpu ** 5)
-            info.centerOfMass = Gf.Vec3f(*(c * inverse_mpu for c in center))
-            info.localPos = Gf.Vec3f(*(c * inverse_mpu for c in shape.pose[0]))
-            x, y, z, w = shape.pose[1]
-            info.localRot = Gf.Quatf(w, x, y, z)
-            return info
-
-        mass, diagonal, center, axes = UsdPhysics.RigidBodyAPI(prim).ComputeMassProperties(mass_information)
-        mass = float(mass)
-        if not all(math.isfinite(float(c)) for c in center):
-            # MassAPI's "not authored" sentinel (-inf) comes back when no collider gave a centre of mass
-            # (the crab_hex plates, the Robotiq base mount): PhysX then uses the body origin
-            center = (0.0, 0.0, 0.0)
-        diagonal = tuple(float(c) * self.mpu ** 2 for c in diagonal)
-        principal_axes = _quat(axes)
-        mass_api = UsdPhysics.MassAPI(prim)
-        if prim.HasAPI(UsdPhysics.MassAPI) and mass_api.GetDiagonalInertiaAttr().HasAuthoredValue():
-            # usd-core leaves the axes uninitialised when only the diagonal is authored: identity, as PhysX
-            authored = mass_api.GetPrincipalAxesAttr().Get() if mass_api.GetPrincipalAxesAttr().HasAuthoredValue() else None
-            has_axes = authored is not None and (authored.GetReal() != 0 or any(authored.GetImaginary()))
-            principal_axes = _quat(authored) if has_axes else (0.0, 0.0, 0.0, 1.0)
-        if mass <= 0.0:
-            self._unsupported(str(prim.GetPath()), "a rigid body without mass or colliders (a frame or a site): "
-                              f"given {FRAME_BODY_MASS * 1000:g} g, a 1 cm sphere's inertia")
-            mass, diagonal = FRAME_BODY_MASS, (FRAME_BODY_INERTIA,) * 3
-        elif not any(shape.collision_enabled for shape in body.shapes) and not (
-                prim.HasAPI(UsdPhysics.MassAPI) and mass_api.GetDiagonalInertiaAttr().HasAuthoredValue()):
-            # usd-core found no collider to integrate: it warns "possibly invalid inertia tensor of
-            # {1,1,1}", uses a small sphere's inertia and leaves the principal axes uninitialised (they
-            # changed from run to run, and so did the simulation). Use the body's own geometry instead.
-            diagonal, principal_axes = _geometry_inertia(self._fallback_shapes(prim, body), mass,
-                                                         self._vec(center), diagonal)
-        diagonal, refused, rounded = inertia_on_triangle(diagonal)
-        if refused:
-            self._fail(f"body {prim.GetPath()}: {refused}")
-        if rounded:
-            self._unsupported(str(prim.GetPath()), rounded)
-        return MassProperties(mass=mass, center_of_mass=self._vec(center), diagonal_inertia=diagonal,
-                              principal_axes=principal_axes)
-
-    def _fallback_shapes(self, prim, body: Body) -> list[Shape]:
-        """Shapes to take a body's inertia from when it has no enabled collider: its disabled
-        colliders, else its own Cube or Sphere geometry (the krabby's tibias)."""
-        from pxr import Gf, UsdGeom
-
-        if body.shapes:
-            return list(body.shapes)
-        scale = Gf.Transform(Gf.Matrix4d(self.xform_cache.GetLocalToWorldTransform(prim))).GetScale()
-        scale = tuple(abs(float(c)) * self.mpu for c in scale)
-        common = dict(path=str(prim.GetPath()), pose=((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)))
-        if prim.IsA(UsdGeom.Cube):
-            half = 0.5 * float(UsdGeom.Cube(prim).GetSizeAttr().Get())
-            return [Shape(kind="box", half_extents=tuple(half * c for c in scale), **common)]
-        if prim.IsA(UsdGeom.Sphere) and scale[0] == scale[1] == scale[2]:
-            return [Shape(kind="sphere", radius=float(UsdGeom.Sphere(prim).GetRadiusAttr().Get()) * scale[0], **common)]
-        return []
 
     # -- joints --------------------------------------------------------------------
     def _joint_body(self, joint_path: str, which: str, body_path, relationship_target, local_pose: Pose):
@@ -500,8 +397,8 @@ class _Importer:
     def _joint(self, kind: str, desc):
         path = str(desc.primPath)
         prim = self.stage.GetPrimAtPath(path)
-        pose0 = (self._vec(desc.localPose0Position), _quat(desc.localPose0Orientation))
-        pose1 = (self._vec(desc.localPose1Position), _quat(desc.localPose1Orientation))
+        pose0 = (self._vec(desc.localPose0Position), quat_of(desc.localPose0Orientation))
+        pose1 = (self._vec(desc.localPose1Position), quat_of(desc.localPose1Orientation))
         body0, pose0 = self._joint_body(path, "body0", desc.body0, desc.rel0, pose0)
         body1, pose1 = self._joint_body(path, "body1", desc.body1, desc.rel1, pose1)
         if body0 is None and body1 is None:
@@ -589,75 +486,3 @@ class _Importer:
 def _axis_name(dof) -> str:
     name = _enum_name(dof)
     return name[0].lower() + name[1:]          # TransX -> transX, RotZ -> rotZ
-
-
-def _unit_density_properties(shape: Shape):
-    """(volume, principal inertia for density 1, centre of mass) of a shape in its own frame, SI units."""
-    if shape.kind == "box":
-        a, b, c = shape.half_extents
-        volume = 8.0 * a * b * c
-        return volume, (volume * (b * b + c * c) / 3.0, volume * (a * a + c * c) / 3.0,
-                        volume * (a * a + b * b) / 3.0), (0.0, 0.0, 0.0)
-    if shape.kind == "sphere":
-        r = shape.radius
-        volume = 4.0 / 3.0 * math.pi * r ** 3
-        return volume, (0.4 * volume * r * r,) * 3, (0.0, 0.0, 0.0)
-    if shape.kind in ("cylinder", "capsule", "cone"):
-        r, h = shape.radius, 2.0 * shape.half_height
-        center = (0.0, 0.0, 0.0)
-        if shape.kind == "cylinder":
-            volume = math.pi * r * r * h
-            axial, transverse = 0.5 * volume * r * r, volume * (3.0 * r * r + h * h) / 12.0
-        elif shape.kind == "capsule":
-            cylinder, spheres = math.pi * r * r * h, 4.0 / 3.0 * math.pi * r ** 3
-            volume = cylinder + spheres
-            axial = 0.5 * cylinder * r * r + 0.4 * spheres * r * r
-            transverse = (cylinder * (h * h / 12.0 + r * r / 4.0)
-                          + spheres * (0.4 * r * r + h * h / 4.0 + 3.0 * h * r / 8.0))
-        else:
-            volume = math.pi * r * r * h / 3.0
-            axial, transverse = 0.3 * volume * r * r, volume * (3.0 * r * r / 20.0 + 3.0 * h * h / 80.0)
-            center = tuple(-0.25 * h * c for c in AXIS_VECTORS[shape.axis])
-        inertia = tuple(axial if c else transverse for c in AXIS_VECTORS[shape.axis])
-        return volume, inertia, center
-    # meshes: their bounding box
-    xs, ys, zs = zip(*shape.points)
-    half = (0.5 * (max(xs) - min(xs)), 0.5 * (max(ys) - min(ys)), 0.5 * (max(zs) - min(zs)))
-    center = (0.5 * (max(xs) + min(xs)), 0.5 * (max(ys) + min(ys)), 0.5 * (max(zs) + min(zs)))
-    volume = 8.0 * half[0] * half[1] * half[2]
-    return volume, (volume * (half[1] ** 2 + half[2] ** 2) / 3.0, volume * (half[0] ** 2 + half[2] ** 2) / 3.0,
-                    volume * (half[0] ** 2 + half[1] ** 2) / 3.0), center
-
-
-def _geometry_inertia(shapes: list[Shape], mass: float, center_of_mass, fallback_diagonal):
-    """(principal inertia, principal axes as xyzw) of *mass* spread evenly over *shapes* (body frame),
-    about *center_of_mass*; a small sphere's inertia on identity axes when there are no shapes."""
-    import numpy as np
-    from pxr import Gf
-
-    parts = [(shape, *_unit_density_properties(shape)) for shape in shapes]
-    total = sum(volume for _shape, volume, _inertia, _center in parts)
-    if not total > 0.0:
-        return tuple(fallback_diagonal), (0.0, 0.0, 0.0, 1.0)
-    tensor = np.zeros((3, 3))
-    for shape, volume, inertia, center in parts:
-        share = mass * volume / total
-        rotation = np.array(Gf.Matrix3d(Gf.Rotation(Gf.Quatd(shape.pose[1][3], *shape.pose[1][:3]))).GetTranspose())
-        offset = np.array(shape.pose[0]) + rotation @ np.array(center) - np.array(center_of_mass)
-        tensor += rotation @ np.diag(np.array(inertia) * share / volume) @ rotation.T
-        tensor += share * (offset @ offset * np.eye(3) - np.outer(offset, offset))
-    values, vectors = np.linalg.eigh(tensor)
-    if np.linalg.det(vectors) < 0:
-        vectors[:, 2] = -vectors[:, 2]
-    quat = Gf.Matrix3d(*vectors.T.flatten().tolist()).ExtractRotation().GetQuat()
-    return tuple(float(v) for v in values), _quat(quat)
-
-
-def joint_frame_offset(joint: Joint, pose0_world: Pose, pose1_world: Pose) -> float:
-    """The joint coordinate implied by two body poses (rad for revolute, m for prismatic)."""
-    frame0, frame1 = compose(pose0_world, joint.pose0), compose(pose1_world, joint.pose1)
-    offset = relative(frame0, frame1)
-    axis = AXIS_VECTORS[joint.axis]
-    if joint.kind == "revolute":
-        return twist_angle(offset[1], axis)
-    return sum(p * a for p, a in zip(offset[0], axis))

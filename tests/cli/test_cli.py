@@ -150,3 +150,15 @@ def test_gui_run_opens_the_window_and_keeps_stdout_for_the_graph():
     assert result.returncode == 0, result.stderr[-2000:]
     assert result.stdout.splitlines() == ["phase 0 move_above_pick: gripper Open", "phase 1 descend: gripper Open"]
     assert "GL_VERSION" in result.stderr, "the PyBullet window really opened (its diagnostics go to stderr)"
+
+
+def test_stage_and_import_take_packaged_asset_names(capsys):
+    """``asset:NAME`` means the same packaged stage to stage and import as to a graph's settings.stage."""
+    from graphflow.cli import main
+
+    assert main(["stage", "asset:ur10.usda", "--json"]) == 0
+    report = json.loads(capsys.readouterr().out)
+    assert [a["path"] for a in report["articulations"]] == ["/ur10"]
+    assert len(report["articulations"][0]["movable_joints"]) == 6          # the UR10's six revolute joints
+    assert main(["import", "asset:nope.usda"]) == 2
+    assert "asset:nope.usda: no such packaged asset" in capsys.readouterr().err

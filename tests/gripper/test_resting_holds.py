@@ -13,10 +13,11 @@ SLIDE = "/World/Lift/Slide"
 G = 9.81
 
 
-def cup_stage(*, down: bool, cube_mass: float, coaxial_limit: float, gap: float = 0.003):
+def cup_stage(*, down: bool, cube_mass: float, coaxial_limit: float, gap: float = 0.003, slide_axis: str = "Z"):
     """A cube (0.1 m, *cube_mass*) resting on the ground and a 0.04 m cup on a vertical slide drive (k 1e5 N/m):
     beside the cube facing +X (*down* False) or above it facing -Z, its face *gap* from the cube; one rigid
-    attachment point on that face, its forward axis into the cube, the given coaxial limit."""
+    attachment point on that face, its forward axis into the cube, the given coaxial limit. *slide_axis* "X":
+    the slide moves the cup horizontally instead."""
     register_schema()
     stage = Usd.Stage.CreateInMemory()
     UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)
@@ -45,7 +46,7 @@ def cup_stage(*, down: bool, cube_mass: float, coaxial_limit: float, gap: float 
     slide.CreateBody0Rel().SetTargets(["/World/Lift/Base"])
     slide.CreateBody1Rel().SetTargets(["/World/Lift/Cup"])
     slide.CreateLocalPos0Attr(Gf.Vec3f(cup[0] + 0.2, 0, cup[2] - 0.5))
-    slide.CreateAxisAttr("Z")
+    slide.CreateAxisAttr(slide_axis)
     drive = UsdPhysics.DriveAPI.Apply(slide.GetPrim(), "linear")
     drive.CreateStiffnessAttr(1e5)
     drive.CreateDampingAttr(2e3)
@@ -122,3 +123,38 @@ def test_a_down_cup_carries_the_resting_1kg_cube_under_a_20n_limit():
     assert all(held), reason
     assert forces[0] < 0.5 and forces[1] == pytest.approx(1.0 * G, rel=0.05)
     assert heights[-1] == pytest.approx(0.15 - 1.5 * G / 1e5, abs=3e-3)
+
+
+def drag(coaxial_limit, steps=60):
+    """Grip a resting 1 kg cube from the side, then pull it along the ground at 0.12 m/s (the slide along X):
+    whether it was held after each step of the drag, the reason, and the force read on the hold at the end."""
+    stage, gripper = cup_stage(down=False, cube_mass=1.0, coaxial_limit=coaxial_limit, slide_axis="X")
+    with create_world(stage) as world:
+        manager = manager_for(world)
+        for _ in range(10):
+            world.step()
+        manager.set_gripper_action(gripper, 1.0)
+        for _ in range(30):
+            world.step()
+        assert manager.get_gripped_objects(gripper) == [CUBE] and read_force(manager, gripper) < 0.5
+        held = []
+        for step in range(steps):
+            world.set_attribute(SLIDE, "drive:linear:physics:targetPosition", -0.002 * (step + 1))
+            world.step()
+            held.append(manager.get_gripped_objects(gripper) == [CUBE])
+        force = read_force(manager, gripper) if held[-1] else None
+        return held, manager.component(gripper).reason, force
+
+
+def test_dragging_a_cube_along_the_ground_reads_the_friction_it_pulls_against():
+    """Sliding, the ground carries the weight and kinetic friction mu m g against the slide (Bullet's pair
+    friction 0.5 x 1 kg x g = 4.905 N), the hold the pull: read 4.905 N to 3 % (the solver's own split put
+    5.4 N of the weight on the hold; taking everything the friction cone allows read 0 N)."""
+    held, reason, force = drag(10.0)
+    assert all(held), reason
+    assert force == pytest.approx(0.5 * 1.0 * G, rel=0.03)
+
+
+def test_a_3n_coaxial_limit_breaks_as_the_drag_begins():
+    held, reason, _force = drag(3.0)
+    assert not held[-1] and "coaxial force" in reason, reason

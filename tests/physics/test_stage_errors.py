@@ -107,12 +107,14 @@ def test_graphflow_stage_names_undriven_joints_and_other_simulators_authoring(tm
     shoulder.CreateAttribute("mjc:armature", Sdf.ValueTypeNames.Float).Set(0.1)
     shoulder.CreateAttribute("newton:damping", Sdf.ValueTypeNames.Float).Set(2.0)
     shoulder.CreateAttribute("urdf:limit:effort", Sdf.ValueTypeNames.Float).Set(150.0)
+    shoulder.CreateAttribute("physxJointAxis:angular:armature", Sdf.ValueTypeNames.Float).Set(0.01)
+    shoulder.CreateAttribute("physxJoint:maxJointVelocity", Sdf.ValueTypeNames.Float).Set(180.0)   # read: not listed
     stage.DefinePrim("/World/Arm/shoulder_motor", "MjcActuator")
     stage.GetRootLayer().Save()
     out = stage_command(path, "--simulate", "0.5")
     assert "without a drive (free): " + ", ".join(f"/World/Arm/joint{j}" for j in range(1, 7)) in out
-    assert "/World/Arm/joint2: MuJoCo and Newton and URDF attributes mjc:armature, newton:damping, " \
-           "urdf:limit:effort not simulated" in out
+    assert "/World/Arm/joint2: MuJoCo and Newton and PhysX and URDF attributes mjc:armature, newton:damping, " \
+           "physxJointAxis:angular:armature, urdf:limit:effort not simulated" in out
     assert "/World/Arm/shoulder_motor: MuJoCo prim MjcActuator not simulated" in out
     assert "drives at their targets" not in out and "no drives: every joint free" in out
 
