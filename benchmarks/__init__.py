@@ -27,7 +27,7 @@ ROOT = Path(__file__).resolve().parent.parent
 GRAPHS = ROOT / "graphs"
 
 NAMES = ("dispatch", "pick_place_overhead", "plain_pybullet", "realtime", "finished_controllers", "instances", "startup",
-         "memory", "sweep_scaling", "report")
+         "memory", "sweep_scaling", "report", "seed_rates")
 
 
 class Skip(Exception):

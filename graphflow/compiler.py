@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import difflib
 import math
-from typing import Any
+from typing import Any, TypeGuard
 
 import networkx as nx
 
@@ -50,6 +50,7 @@ def problems(document: GraphDocument, registry: Registry | None = None) -> list[
     compilation = _Compilation(document, registry or default_registry())
     node_types, _authored = compilation._nodes()
     compilation._settings()
+    compilation._checks()
     compilation._variables()
     compilation._connections(node_types)
     return compilation.problems
@@ -68,6 +69,7 @@ class _Compilation:
         document = self.document
         node_types, authored = self._nodes()
         self._settings()
+        self._checks()
         variable_types, variable_defaults = self._variables()
         pulls, exec_edges, data_graph = self._connections(node_types)
         if self.problems:
@@ -143,6 +145,27 @@ class _Compilation:
         duration = settings.get("duration")
         if isinstance(duration, (int, float)) and math.isfinite(duration) and duration > MAX_DURATION:
             self._problem(f"settings/duration: {duration!r} s is more than {MAX_DURATION:g} simulated seconds")
+
+    def _checks(self) -> None:
+        """Check times a run cannot honour: a ``held`` window that ends before it starts, a time past
+        ``settings.duration`` (the check would report a false failure after the whole run)."""
+        duration = self.document.settings.get("duration")
+        if not (isinstance(duration, (int, float)) and math.isfinite(duration)):
+            duration = None
+        for index, check in enumerate(self.document.checks, start=1):
+            where = f"checks[{index}] ({check.get('check')}{', ' + repr(check['name']) if 'name' in check else ''})"
+            start, end = check.get("from"), check.get("to")
+            if _is_number(start) and _is_number(end) and start > end:
+                self._problem(f"{where}: from {start:g} s is after to {end:g} s")
+            for key in ("at", "from", "to", "time"):
+                value = check.get(key)
+                if not _is_number(value):
+                    continue
+                if not math.isfinite(value) or value < 0:
+                    self._problem(f"{where}: {key} {value!r} is not a time in the run (a finite number >= 0)")
+                elif duration is not None and value > duration:
+                    self._problem(f"{where}: {key} {value:g} s is after the run ends "
+                                  f"(settings/duration {duration:g} s)")
 
     # ---------------------------------------------------------------- variables
 
@@ -239,3 +262,7 @@ def _data_cycles(graph: nx.DiGraph, names: list[str]) -> list[list[str]]:
         cycle = nx.find_cycle(graph.subgraph(component), source=start)
         cycles.append([names[edge[0]] for edge in cycle])
     return sorted(cycles)
+
+
+def _is_number(value: object) -> TypeGuard[float]:
+    return isinstance(value, (int, float)) and not isinstance(value, bool)

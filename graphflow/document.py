@@ -61,9 +61,13 @@ def _schema_problems(data: Any, source: str) -> list[Problem]:
     return problems
 
 
-def parse_document(data: Any, source: str = "<graph>", registry: Registry | None = None) -> GraphDocument:
-    """Build and check a document from parsed JSON (schema, then ``graphflow.compiler.compile``); raise GraphError listing every problem."""
-    problems = _schema_problems(data, source)
+def parse_document(data: Any, source: str = "<graph>", registry: Registry | None = None, *,
+                   schema_problems=None) -> GraphDocument:
+    """Build and check a document from parsed JSON (schema, then ``graphflow.compiler.compile``); raise GraphError listing every problem.
+
+    *schema_problems* replaces the whole-file schema check (``graphflow.build`` checks only the entries a call changed).
+    """
+    problems = (schema_problems or _schema_problems)(data, source)
     if problems:
         raise GraphError(problems + _problems_of_valid_parts(data, source, registry, problems))
     major = data["formatVersion"][0]
@@ -82,6 +86,7 @@ def parse_document(data: Any, source: str = "<graph>", registry: Registry | None
         source=source,
         checks=tuple(frozen_mapping(check) for check in data.get("checks", [])),
         scenario=frozen_mapping(data.get("scenario", {})),
+        schema=data.get("$schema", ""),
     )
     from graphflow.compiler import compile  # checking a document is compiling it
 
@@ -105,7 +110,7 @@ def _problems_of_valid_parts(data: Any, source: str, registry: Registry | None, 
         return [entry for index, entry in enumerate(entries) if (section, index) not in broken]
 
     skipped = {entry.get("name") for index, entry in enumerate(data["nodes"])
-               if ("nodes", index) in broken and isinstance(entry, dict)}
+               if ("nodes", index) in broken and isinstance(entry, dict) and isinstance(entry.get("name"), str)}
     settings = data.get("settings", {})
     document = GraphDocument(
         nodes=tuple(NodeDoc(n["name"], n["type"], n.get("typeVersion"), frozen_mapping(n.get("inputs", {})))
@@ -125,12 +130,14 @@ def _parse_connection(entry: dict) -> Connection:
 
 
 def load_document(path: str | os.PathLike, registry: Registry | None = None) -> GraphDocument:
-    """Read (strict JSON: see graphflow.files) and check a graph file."""
+    """Read (strict JSON: see graphflow.files) and check a graph file; older typeVersions are migrated (graphflow.migration)."""
     try:
         data = read_json(path)
     except FileProblem as error:
         raise GraphError([Problem(str(path), error.reason)]) from None
-    return parse_document(data, str(path), registry)
+    from graphflow.migration import migrate_on_load
+
+    return migrate_on_load(parse_document(data, str(path), registry), registry)
 
 
 def dumps(document: GraphDocument) -> str:
@@ -149,8 +156,10 @@ def save_document(document: GraphDocument, path: str | os.PathLike, *, force: bo
 def rebased(document: GraphDocument, path: str | os.PathLike) -> GraphDocument:
     """*document* as it must read when saved at *path*: its relative stage path made relative to that folder."""
     stage = document.settings.get("stage")
-    if not isinstance(stage, str) or stage.startswith("asset:") or Path(stage).is_absolute():
+    if not isinstance(stage, str) or stage.startswith(("asset:", "@")) or Path(stage).is_absolute():
         return document
+    if not (document.base_dir / stage).exists():
+        return document   # names no file here: an asset root's (graphflow/ur10.usda, found from any folder) or none
     folder = Path(path).resolve().parent
     if folder == document.base_dir:
         return document

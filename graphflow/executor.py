@@ -132,6 +132,18 @@ class NodeDatabase:
     def is_latent(self) -> bool:
         return self._index in self._instance._latent
 
+    @property
+    def connected_exec_outputs(self) -> frozenset[str]:
+        """Exec outputs wired to something: Kit nodes whose output count is dynamic (Multigate) count these."""
+        node = self._instance.compiled.nodes[self._index]
+        return frozenset(name for name, targets in node.exec_targets if targets)
+
+    def exec_input_sources(self, name: str) -> int:
+        """How many exec outputs are wired into the exec input *name* (SyncGate waits for each of them)."""
+        wanted = (self._index, name)
+        return sum(targets.count(wanted) for node in self._instance.compiled.nodes
+                   for _output, targets in node.exec_targets)
+
     def log(self, message: str, level: str = "info") -> None:
         self._instance._log(self.node_name, level, str(message))
 

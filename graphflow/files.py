@@ -17,6 +17,7 @@ from __future__ import annotations
 import json
 import math
 import os
+import re
 import shutil
 import tempfile
 from contextlib import contextmanager
@@ -111,12 +112,121 @@ def loads_strict(text: str, source: str) -> Any:
                           parse_float=_finite_float, parse_int=_checked_int)
     except json.JSONDecodeError as error:
         raise FileProblem(source, f"malformed JSON at line {error.lineno} column {error.colno}: {error.msg}") from None
-    except _StrictJSONError as error:
-        raise FileProblem(source, f"invalid JSON: {error}") from None
-    except RecursionError:
-        raise FileProblem(source, f"invalid JSON: nested more than {MAX_JSON_DEPTH} levels deep") from None
-    _check_tree(data, source)
+    except (_StrictJSONError, RecursionError):
+        problem = _locate_problem(text)
+        if problem is None:      # the scanner below agrees with json on what is wrong; this is a safety net
+            raise FileProblem(source, "invalid JSON") from None
+        raise FileProblem(source, problem) from None
+    try:
+        _check_tree(data, source)
+    except FileProblem:
+        raise FileProblem(source, _locate_problem(text) or "invalid JSON") from None
     return data
+
+
+_NUMBER = re.compile(r"(-?(?:0|[1-9]\d*))(\.\d+)?([eE][-+]?\d+)?")
+_WHITESPACE = re.compile(r"[ \t\n\r]*")
+_LITERALS = (("true", True), ("false", False), ("null", None), ("NaN", "NaN"), ("Infinity", "Infinity"),
+             ("-Infinity", "-Infinity"))
+
+
+def _locate_problem(text: str) -> str | None:
+    """Where strict parsing failed and why: "invalid JSON at line L column C (key/path, node 'n'): reason".
+
+    A second, iterative pass over text that ``json`` already tokenised: it keeps the key path and
+    finds the first NaN/Infinity literal, duplicate key, overflowing number, lone surrogate or
+    too-deep nesting. Only called on a refusal, so it costs nothing on a good file.
+    """
+    path: list = []          # keys and indices down to the current value
+    frames: list = []        # per open container: [kind, keys seen, next key or index]
+    position = 0
+    expecting_key = False
+
+    def found(at: int, reason: str) -> str:
+        line = text.count("\n", 0, at) + 1
+        column = at - (text.rfind("\n", 0, at) + 1) + 1
+        where = "/".join(str(part) for part in path[:12]) + ("/..." if len(path) > 12 else "")
+        node = _node_name(text, path)
+        label = ", ".join(part for part in (where, f"node '{node}'" if node else "") if part)
+        return f"invalid JSON at line {line} column {column}" + (f" ({label})" if label else "") + f": {reason}"
+
+    while True:
+        blank = _WHITESPACE.match(text, position)
+        position = blank.end() if blank is not None else position
+        if position >= len(text):
+            return None
+        char = text[position]
+        if char in ",:":
+            position += 1
+            if char == "," and frames and frames[-1][0] == "array":
+                frames[-1][2] += 1
+                path[-1] = frames[-1][2]
+            expecting_key = char == "," and bool(frames) and frames[-1][0] == "object"
+            continue
+        if char in "}]":
+            frames.pop()
+            path.pop()
+            position += 1
+            continue
+        if char == '"':
+            value, end = json.decoder.scanstring(text, position + 1)  # type: ignore[attr-defined]  # not in typeshed
+            if not _encodes(value):
+                shown = value.encode("utf-8", "backslashreplace").decode("ascii", "backslashreplace")[:60]
+                return found(position, f"lone surrogate escape in the string \"{shown}\"")
+            if expecting_key:
+                keys = frames[-1][1]
+                path[-1] = value
+                if value in keys:
+                    return found(position, f"duplicate key {json.dumps(value, ensure_ascii=True)} in one object")
+                keys.add(value)
+                expecting_key = False
+            position = end
+            continue
+        if char in "{[":
+            if len(frames) >= MAX_JSON_DEPTH:
+                return found(position, f"nested more than {MAX_JSON_DEPTH} levels deep")
+            frames.append(["object" if char == "{" else "array", set(), 0])
+            path.append(None if char == "{" else 0)
+            expecting_key = char == "{"
+            position += 1
+            continue
+        for literal, value in _LITERALS:
+            if text.startswith(literal, position):
+                if isinstance(value, str):
+                    return found(position, f"{literal} is not a JSON value (RFC 8259 has no NaN or Infinity)")
+                position += len(literal)
+                break
+        else:
+            number = _NUMBER.match(text, position)
+            if number is None:
+                return None
+            whole = number.group(0)
+            if number.group(2) or number.group(3):
+                if not math.isfinite(float(whole)):
+                    return found(position, f"number {whole[:40]} is too large (beyond the double range)")
+            elif len(whole.lstrip("-")) > 400:
+                return found(position, f"integer with {len(whole)} digits is too large")
+            position = number.end()
+
+
+def _encodes(text: str) -> bool:
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        return False
+    return True
+
+
+def _node_name(text: str, path: list) -> str | None:
+    """The ``name`` of graph node ``nodes[i]`` when *path* is inside one (read leniently: the file has a flaw)."""
+    if len(path) < 2 or path[0] != "nodes" or not isinstance(path[1], int):
+        return None
+    try:
+        nodes = json.loads(text).get("nodes")
+        name = nodes[path[1]].get("name")
+    except (ValueError, RecursionError, AttributeError, IndexError, TypeError):
+        return None
+    return one_line(name) if isinstance(name, str) else None
 
 
 def _check_tree(data: Any, source: str) -> None:

@@ -99,6 +99,7 @@ class GraphDocument:
     source: str = "<graph>"   # the file it came from, for messages and relative stage paths
     checks: tuple[Mapping[str, Any], ...] = ()   # what must be true of a run (graphflow.verdicts.checks, docs/checks.md)
     scenario: Mapping[str, Any] = field(default_factory=dict)   # scripted inputs of a checked run (keys, gamepad)
+    schema: str = ""   # the file's "$schema": the JSON Schema editors complete and check it with
     # its compiled graph per registry id, kept by graphflow.compiler.compile (derived, not part of the definition)
     _compiled: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
@@ -118,6 +119,8 @@ class GraphDocument:
 
     def to_json(self) -> dict:
         data: dict[str, Any] = {"format": FORMAT_NAME, "formatVersion": list(self.format_version)}
+        if self.schema:
+            data["$schema"] = self.schema
         if self.description:
             data["description"] = self.description
         if self.settings:

@@ -14,6 +14,7 @@ instance state, so one graph document can run many times side by side.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
@@ -63,11 +64,19 @@ class Attribute:
             raise TypeMismatch(f"expected exactly {self.length} values, got {len(coerced)}")
         if self.minimum is not None or self.maximum is not None:
             for number in _numbers(coerced):
+                if not math.isfinite(number):   # NaN passes every comparison; infinity is no setting either
+                    raise TypeMismatch(f"value {number} is not a finite number (the range {self._range()} "
+                                       "holds finite numbers only)")
                 if self.minimum is not None and number < self.minimum:
                     raise TypeMismatch(f"value {number} is below the minimum {self.minimum}")
                 if self.maximum is not None and number > self.maximum:
                     raise TypeMismatch(f"value {number} is above the maximum {self.maximum}")
         return coerced
+
+    def _range(self) -> str:
+        if self.minimum is not None and self.maximum is not None:
+            return f"{self.minimum:g} to {self.maximum:g}"
+        return f">= {self.minimum:g}" if self.minimum is not None else f"<= {self.maximum:g}"
 
     def to_json(self) -> dict:
         entry = {"name": self.name, "type": self.type, "default": _jsonable(self.default),

@@ -42,6 +42,7 @@ SCALAR_KINDS = {
     "int64": "int",
     "uint": "uint",
     "uint64": "uint",
+    "uchar": "uint",
     "float": "real",
     "double": "real",
     "half": "real",
@@ -57,7 +58,8 @@ TUPLE_ROLES = {"quatd": "double", "quatf": "float", "quath": "half",
                "matrixd": "double"}
 
 # the values each scalar type can hold (OmniGraph's int and uint are 32-bit, float is 32-bit IEEE)
-INTEGER_RANGES = {"int": (-2**31, 2**31 - 1), "int64": (-2**63, 2**63 - 1), "uint": (0, 2**32 - 1), "uint64": (0, 2**64 - 1)}
+INTEGER_RANGES = {"uchar": (0, 255), "int": (-2**31, 2**31 - 1), "int64": (-2**63, 2**63 - 1), "uint": (0, 2**32 - 1),
+                  "uint64": (0, 2**64 - 1)}
 REAL_LIMITS = {"float": 3.4028234663852886e38, "half": 65504.0}
 
 _TYPE_PATTERN = re.compile(r"^(?P<base>[a-z0-9]+)(\[(?P<n>\d+)\])?(?P<array>\[\])?$")

@@ -213,6 +213,12 @@ class World(Protocol):
     def joint_names(self, articulation_path: str) -> tuple[str, ...]: ...
     def joint_positions(self, articulation_path: str) -> tuple[float, ...]: ...
     def joint_velocities(self, articulation_path: str) -> tuple[float, ...]: ...
+    def joint_paths(self, articulation_path: str) -> tuple[str, ...]:
+        """The movable joints' prim paths, in DOF order."""
+    def joint_efforts(self, articulation_path: str) -> tuple[float, ...]:
+        """Effort (N m or N) each DOF's actuation applied during the last step."""
+    def joint_dof_types(self, articulation_path: str) -> tuple[int, ...]:
+        """Per DOF: 0 rotation (revolute), 1 translation (prismatic)."""
     def set_joint_targets(self, articulation_path: str, indices: Sequence[int], *,
                           positions: Sequence[float] | None = None,
                           velocities: Sequence[float] | None = None,
@@ -294,6 +300,7 @@ class ClockWorld:
         raise WorldError("this graph names no stage, so there are no prims to read or write")
 
     prim_pose = prim_velocity = joint_names = joint_positions = joint_velocities = _no_physics
+    joint_paths = joint_efforts = joint_dof_types = _no_physics
     set_joint_targets = get_attribute = set_attribute = gravity = _no_physics
     raycast = raycast_batch = contacts = body_of = same_body = _no_physics
     apply_force = gravity_enabled = set_gravity_enabled = set_collision_between = _no_physics

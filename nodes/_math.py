@@ -143,3 +143,13 @@ COMPARISONS = {
     "==": operator.eq,
     "!=": operator.ne,
 }
+
+
+def compute_unary(db, op, input_name, output, accept=is_number, kind="numbers"):
+    """Shared compute of the one-operand nodes: outputs.<output> = op(input) elementwise."""
+    try:
+        result = elementwise(op, [require(db, input_name)], (input_name,), accept, kind)
+    except (MathError, ValueError) as error:
+        db.error(f"inputs:{input_name}: {error}")
+        return
+    setattr(db.outputs, output, result)

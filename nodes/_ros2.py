@@ -98,3 +98,79 @@ def rotate_into(orientation, value):
     cx, cy, cz = y * vz - z * vy, z * vx - x * vz, x * vy - y * vx
     ccx, ccy, ccz = y * cz - z * cy, z * cx - x * cz, x * cy - y * cx
     return (vx + 2 * (w * cx + ccx), vy + 2 * (w * cy + ccy), vz + 2 * (w * cz + ccz))
+
+
+def service_inputs(*, exec_name: str, exec_description: str, with_name: bool = True) -> tuple[Attribute, ...]:
+    """Isaac's inputs on the service nodes: the exec input, context, nodeNamespace, serviceName, the type."""
+    return ((Attribute(exec_name, "execution", description=exec_description),
+             Attribute("context", "uint64", default=0, description="ROS 2 context handle (0: the default)"),
+             Attribute("nodeNamespace", "string", default="", description="Namespace prefixed to a relative name"))
+            + ((Attribute("serviceName", "string", default="/service_name", description="Name of the service"),)
+               if with_name else ())
+            + (Attribute("messagePackage", "string", default="", description="Package (example_interfaces)"),
+               Attribute("messageSubfolder", "string", default="srv", description="Subfolder (srv)"),
+               Attribute("messageName", "string", default="", description="Service type name (AddTwoInts)")))
+
+
+def service_type_of(db) -> str | None:
+    """The node's ``pkg/srv/Name``; None (with Isaac's warning) while package or name is empty."""
+    from graphflow.ros2.services import MessageError, service_type
+
+    inputs = db.inputs
+    if not inputs.messagePackage.strip() or not inputs.messageName.strip():
+        db.log("messagePackage or messageName is empty: nothing to call or serve", "warning")
+        return None
+    try:
+        return service_type(inputs.messagePackage, inputs.messageSubfolder, inputs.messageName)
+    except MessageError as error:
+        db.error(str(error))
+
+
+def service_of(db) -> str:
+    """The fully qualified service name, /namespace/name for a relative one."""
+    name = db.inputs.serviceName.strip()
+    if not name:
+        db.error("inputs:serviceName is empty")
+    if name.startswith("/"):
+        return name
+    namespace = db.inputs.nodeNamespace.strip().strip("/")
+    return f"/{namespace}/{name}" if namespace else f"/{name}"
+
+
+def service_fields(db, full_type: str, part: str) -> dict:
+    """messageFields (Isaac's ``Request:a`` / ``Response:sum`` inputs, gathered on import) as a whole *part*."""
+    import json
+
+    from graphflow.ros2.services import MessageError, complete
+
+    try:
+        fields = json.loads(db.inputs.messageFields or "{}")
+    except json.JSONDecodeError as error:
+        db.error(f"inputs:messageFields: not JSON ({error.msg})")
+    prefix = part.capitalize() + ":"
+    if isinstance(fields, dict):
+        fields = {key[len(prefix):] if key.startswith(prefix) else key: value for key, value in fields.items()}
+    try:
+        return complete(full_type, part, fields, "inputs:messageFields")
+    except MessageError as error:
+        db.error(str(error))
+
+
+def take_service_part(db, service: str, full_type: str, part: str) -> dict | None:
+    """The newest *part* of *service* this node has not taken yet, checked; else None."""
+    from graphflow.ros2.services import MessageError, complete, topic
+
+    latest = bus(db).latest(topic(service, part))
+    if latest is None or latest.sequence <= db.internal.get("taken", 0):
+        return None
+    db.internal["taken"] = latest.sequence
+    try:
+        return complete(full_type, part, latest.message, f"service {service} {part}")
+    except MessageError as error:
+        db.error(str(error))
+
+
+def send_service_part(db, service: str, full_type: str, part: str, message: dict) -> None:
+    from graphflow.ros2.services import topic
+
+    bus(db).publish_service_part(topic(service, part), f"{full_type}_{part.capitalize()}", message)

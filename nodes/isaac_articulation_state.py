@@ -1,9 +1,10 @@
 """isaacsim.core.nodes.IsaacArticulationState: joint names, positions and velocities of an articulation.
 
 Joints are chosen by jointNames, else jointIndices, else all, in the
-articulation's DOF order. Isaac also reports measured joint efforts and
-reaction forces and torques; graphflow's world does not measure those, so
-those three outputs stay empty (the coverage table says so).
+articulation's DOF order. measuredJointEfforts is what each joint's
+actuation applied in the last step; Isaac also reports joint reaction forces
+and torques, which graphflow's world does not measure, so those two outputs
+stay empty.
 """
 from graphflow.spec import Attribute, NodeSpec
 from graphflow.types import ExecState
@@ -14,9 +15,9 @@ SPEC = NodeSpec(
     version=1,
     aliases=("omni.isaac.core_nodes.IsaacArticulationState",),
     description=(
-        "On execIn, the names, positions (rad or m) and velocities (rad/s or m/s) of the chosen joints of the "
-        "articulation at robotPath (or targetPrim). The measured efforts, forces and torques stay empty: "
-        "graphflow's world does not measure joint reactions."),
+        "On execIn, the names, positions (rad or m), velocities (rad/s or m/s) and applied efforts (N m or N) "
+        "of the chosen joints of the articulation at robotPath (or targetPrim). The measured reaction forces "
+        "and torques stay empty: graphflow's world does not measure joint reactions."),
     categories=("isaacCore",),
     ui_name="Articulation State",
     inputs=(
@@ -31,7 +32,7 @@ SPEC = NodeSpec(
         Attribute("jointNames", "token[]", description="The joints read"),
         Attribute("jointPositions", "double[]", description="Their positions, rad or m"),
         Attribute("jointVelocities", "double[]", description="Their velocities, rad/s or m/s"),
-        Attribute("measuredJointEfforts", "double[]", description="Empty: not measured by graphflow's world"),
+        Attribute("measuredJointEfforts", "double[]", description="Efforts their actuation applied, N m or N"),
         Attribute("measuredJointForces", "double[3][]", description="Empty: not measured by graphflow's world"),
         Attribute("measuredJointTorques", "double[3][]", description="Empty: not measured by graphflow's world"),
     ),
@@ -48,6 +49,7 @@ def compute(db):
     try:
         names = db.world.joint_names(path)
         positions, velocities = db.world.joint_positions(path), db.world.joint_velocities(path)
+        efforts = db.world.joint_efforts(path)
     except WorldError as error:
         db.error(str(error))
     if inputs.jointNames:
@@ -64,4 +66,5 @@ def compute(db):
     db.outputs.jointNames = tuple(names[i] for i in indices)
     db.outputs.jointPositions = tuple(float(positions[i]) for i in indices)
     db.outputs.jointVelocities = tuple(float(velocities[i]) for i in indices)
+    db.outputs.measuredJointEfforts = tuple(float(efforts[i]) for i in indices)
     db.outputs.execOut = ExecState.ENABLED

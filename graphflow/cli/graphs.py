@@ -1,6 +1,7 @@
 """Commands about graph files: ``validate``, ``import``, ``new``, ``nodes``."""
 from __future__ import annotations
 
+import dataclasses
 import json
 import re
 import sys
@@ -37,7 +38,8 @@ def register(commands) -> None:
         "validate", help="check graph files and the stages they name without running them; print every problem")
     validate.add_argument("graphs", nargs="+", metavar="GRAPH")
     validate.add_argument("--allow-missing-assets", action="store_true",
-                          help="report inputs naming prims of layers the import could not open as warnings, not errors")
+                          help="a reference, payload or sublayer of the stage that cannot be opened, and inputs naming "
+                               "prims of such layers, are warnings, not errors")
     validate.set_defaults(handler=command_validate)
 
     nodes = commands.add_parser("nodes", help="list the registered node types")
@@ -50,6 +52,9 @@ def register(commands) -> None:
 
     new = commands.add_parser("new", help="write a starter graph")
     new.add_argument("name", help="file name (.json is added if missing)")
+    new.add_argument("--stage", metavar="ROBOT",
+                     help="also write NAME.usda, a cell around a packaged robot (ur10), and make NAME.json its "
+                          "pick-and-place graph with checks")
     new.add_argument("--force", action="store_true", help="overwrite an existing file")
     new.set_defaults(handler=command_new)
 
@@ -64,14 +69,24 @@ def register(commands) -> None:
 
 
 def command_validate(args) -> int:
+    from graphflow.usd.opening import missing_layers_refused
+
+    with missing_layers_refused(not args.allow_missing_assets):
+        return _validate(args.graphs, args.allow_missing_assets)
+
+
+def _validate(graphs: list[str], allow_missing_assets: bool) -> int:
     from graphflow.validate.preflight import file_problems
     from graphflow.validate.stage_names import deep_validate
 
     failed = False
-    for path in args.graphs:
-        problems, warnings_ = file_problems(path), []
+    for path in graphs:
+        document, problems, warnings_ = _scenario_table(path)   # a table: its graph with the table's checks
+        if document is None and not problems:
+            problems = file_problems(path)
+            document = None if problems else load_document(path)
         if not problems:   # the graph and its stage load: check what the graph names on that stage
-            problems, warnings_ = deep_validate(load_document(path), allow_missing_assets=args.allow_missing_assets)
+            problems, warnings_ = deep_validate(document, allow_missing_assets=allow_missing_assets)
         for problem in warnings_:
             print(f"warning: {problem}", file=sys.stderr)
         for problem in problems:
@@ -80,6 +95,23 @@ def command_validate(args) -> int:
             print(f"{path}: ok")
         failed = failed or bool(problems)
     return EXIT_BAD_INPUT if failed else EXIT_OK
+
+
+def _scenario_table(path: str):
+    """(its graph with the table's checks, [], []) for a scenario table, (None, problems, []) for a table that
+    cannot be used, (None, [], []) for any other file."""
+    from graphflow.files import FileProblem, read_json
+    from graphflow.verdicts.cases import graph_with_checks, is_table, load_table
+
+    try:
+        if not is_table(read_json(path)):
+            return None, [], []
+        cases = load_table(path)
+    except FileProblem:
+        return None, [], []   # file_problems says what is wrong with it
+    except BadInput as error:
+        return None, error.lines(), []
+    return graph_with_checks(cases[0].graph, cases[0].checks), [], []
 
 
 def command_nodes(args) -> int:
@@ -110,16 +142,39 @@ def _write_node_docs(args) -> int:
 
 
 def first_sentence(text: str) -> str:
-    """The first sentence of a description, whole (never cut at "e.g." or "..."), without its final period."""
-    match = _SENTENCE_END.search(text)
-    sentence = text[:match.start() + 1] if match else text
-    return " ".join(sentence.split()).rstrip(".")
+    """The first sentence of a description, whole (never cut at "e.g." or "..."), without its final period.
+
+    A first sentence that is only a label ("Event source.") says nothing apart from the next one: the
+    summary runs on to the first sentence of three words or more.
+    """
+    end = 0
+    for match in _SENTENCE_END.finditer(text):
+        sentence, end = text[end:match.start() + 1], match.start() + 1
+        if len(sentence.split()) >= 3:
+            break
+    else:
+        end = len(text)
+    return " ".join(text[:end].split()).rstrip(".")
 
 
 def command_new(args) -> int:
+    from graphflow.catalog.schema import write_schema
+    from graphflow.cli.editing import SCHEMA_FILE
+
     target = Path(args.name if args.name.endswith(".json") else f"{args.name}.json")
-    save_document(parse_document(json.loads(json.dumps(STARTER_GRAPH)), str(target)), target, force=args.force)
+    if args.stage:
+        from graphflow.build.starters import write_cell
+
+        stage, _ = write_cell(target, args.stage, force=args.force)
+        print(f"wrote {stage}")
+    else:
+        starter = {"$schema": SCHEMA_FILE, **json.loads(json.dumps(STARTER_GRAPH))}
+        save_document(parse_document(starter, str(target)), target, force=args.force)
     print(f"wrote {target}")
+    schema = target.parent / SCHEMA_FILE
+    if not schema.exists():   # what "$schema" names, for editors; refresh it with graphflow schema -o --force
+        write_schema(schema)
+        print(f"wrote {schema}")
     return EXIT_OK
 
 
@@ -132,7 +187,11 @@ def command_import(args) -> int:
         refuse_existing(args.output, args.force)
     stage = str(resolve_stage(args.stage, Path.cwd()))
     result = import_graph(stage, graph_path=args.graph, output_path=args.output, skip_unknown=args.skip_unknown)
-    for warning in result.warnings:
+    from graphflow.validate.stage_names import unset_target_warnings
+
+    unset = [str(dataclasses.replace(problem, file=f"{args.stage}: {result.graph_path}"))   # named as in the USD file
+             for problem in unset_target_warnings(result.document)]
+    for warning in [*result.warnings, *unset]:
         print(f"warning: {warning}", file=sys.stderr)
     if args.output:
         save_document(result.document, args.output, force=args.force)

@@ -41,13 +41,14 @@ def register(commands) -> None:
     run.add_argument("--record-topics", metavar="FILE.mcap",
                      help="write every message ROS 2 publisher nodes publish to an MCAP file (ROS 2 CDR encoding)")
     run.add_argument("--checks", action="store_true",
-                     help="evaluate the graph's checks even when --ticks, --seconds, --key(s), --gamepad, --pad or --gui "
-                          "change the run (by default they are evaluated only for the run as written)")
+                     help="evaluate the graph's checks even when --ticks, --seconds, --key(s), --gamepad, --pad, "
+                          "--topic(s) or --gui change the run (by default they are evaluated only for the run as written)")
     run.add_argument("--set", action="append", default=[], metavar="TARGET=VALUE",
                      help="override (repeatable): NODE.INPUT=VALUE (a node input) or /Prim/Path.attribute=VALUE "
                           "(a stage attribute, in USD units); VALUE is JSON or a plain string (docs/sweeps.md)")
     run.add_argument("--randomize", metavar="FILE",
-                     help="draw the randomize entries of FILE (a sweep file or {\"randomize\": [...]}) from --seed")
+                     help="draw the randomize entries of FILE (a sweep file, {\"randomize\": [...]}, or a graph's "
+                          "scenario section) from --seed")
     run.add_argument("--log-level", default="warning", choices=["debug", "info", "warning", "error"],
                      help="Python logging level on stderr (default warning)")
     run.add_argument("--trace", metavar="FILE", help="write what happens every tick as JSON Lines (docs/trace.md)")
@@ -80,10 +81,9 @@ def _scripted_inputs(args, document):
 
     keys = scripted_keys(args.keys, args.key)
     pad = scripted_pad(args.gamepad, args.pad)
-    if not args.gui and keys is None and pad is None:
-        own = ScriptedInputs.of_document(document)
-        keys, pad = own.keys, own.pad
     topics = ros2_run.check_options(args.topics, args.topic, args.record_topics)
+    if not args.gui and keys is None and pad is None and topics is None:
+        return ScriptedInputs.of_document(document)   # the scenario's inputs are used whole or not at all
     return ScriptedInputs(keys=keys, pad=pad, topics=topics)
 
 
@@ -91,7 +91,7 @@ def _changed_by_options(args) -> list[str]:
     """The options that make this run differ from the graph's scenario, so its checks do not apply."""
     options = {"--ticks": args.ticks is not None, "--seconds": args.seconds is not None, "--keys": args.keys is not None,
                "--key": bool(args.key), "--gamepad": args.gamepad is not None, "--pad": bool(args.pad),
-               "--gui": args.gui}
+               "--topics": args.topics is not None, "--topic": bool(args.topic), "--gui": args.gui}
     return [name for name, given in options.items() if given]
 
 
@@ -130,11 +130,11 @@ def command_run(args) -> int:
             recording = ros2_run.attach_topics(simulation.world, None, args.record_topics)
             outputs.push(lambda kind, _error, _trace: recording.abandon() if kind is not None else recording.close())
         trace_stream = _open_trace(args.trace, outputs, args.force) if args.trace else None
-        report = _start_report(args, simulation, trace_stream)
+        report = _start_report(args, simulation, trace_stream, variant.drawn)
         if trace_stream is not None and report is None:
             from graphflow.observe.trace import TraceRecorder
 
-            TraceRecorder(simulation, trace_stream, graph=args.graph)
+            TraceRecorder(simulation, trace_stream, graph=args.graph, randomized=variant.drawn)
         if args.record:
             simulation.world.services.add(_start_recording(args, simulation.world, outputs))
         if args.gui and args.speed > 0:
@@ -186,13 +186,14 @@ def _start_recording(args, world, outputs: contextlib.ExitStack):
     return video
 
 
-def _start_report(args, simulation, trace_stream):
+def _start_report(args, simulation, trace_stream, randomized=()):
     """The run's report recording (graphflow.report), teed to the --trace file when both are asked for."""
     if not args.report:
         return None
     from graphflow.report.recording import ReportRecording
 
-    return ReportRecording(simulation, args.graph, also_to=trace_stream, timings=args.report_timings)
+    return ReportRecording(simulation, args.graph, also_to=trace_stream, timings=args.report_timings,
+                           randomized=randomized)
 
 
 def _write_report(args, report, checked, seed: int) -> None:

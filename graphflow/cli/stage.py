@@ -24,8 +24,16 @@ def register(commands) -> None:
     stage.add_argument("--json", action="store_true", help="print one JSON object")
     stage.add_argument("--simulate", type=arguments.seconds, metavar="SECONDS",
                        help="step the stage with drives at their targets and report how far bodies moved")
-    stage.set_defaults(handler=lambda args: run_stage_command(args.stage, as_json=args.json,
-                                                              simulate_seconds=args.simulate))
+    stage.add_argument("--allow-missing-assets", action="store_true",
+                       help="a reference, payload or sublayer that cannot be opened is a warning, not a failure")
+    stage.set_defaults(handler=command_stage)
+
+
+def command_stage(args) -> int:
+    from graphflow.usd.opening import missing_layers_refused
+
+    with missing_layers_refused(not args.allow_missing_assets):
+        return run_stage_command(args.stage, as_json=args.json, simulate_seconds=args.simulate)
 
 
 def run_stage_command(stage_path: str, as_json: bool, simulate_seconds: float | None) -> int:

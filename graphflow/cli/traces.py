@@ -15,6 +15,10 @@ def register(commands) -> None:
         "diff", help="print the first tick and field where two traces differ (exit 0 identical, 1 different)")
     trace_diff.add_argument("left", metavar="A", help="trace file")
     trace_diff.add_argument("right", metavar="B", help="trace file")
+    trace_diff.add_argument("--tolerance", nargs="?", const="", metavar="VALUE|FILE",
+                            help="compare floats within tolerances (alone: the defaults of docs/trace.md; a number: "
+                                 "that absolute bound for every float; a JSON file: per kind and per field); "
+                                 "exec pulses, phases, statuses and logs stay exact")
     trace_diff.set_defaults(handler=command_trace_diff)
 
     draw = commands.add_parser("draw", help="draw a graph: nodes, exec and data edges, left to right in execution order")
@@ -35,6 +39,15 @@ def command_trace_diff(args) -> int:
     from graphflow.observe.trace import first_difference, read_trace
 
     left, right = read_trace(args.left), read_trace(args.right)
+    if args.tolerance is not None:
+        from graphflow.observe.trace_tolerance import read_tolerances, tolerant_difference
+
+        divergence = tolerant_difference(left, right, read_tolerances(args.tolerance or None))
+        if divergence is None:
+            print(f"traces match within tolerance ({len(left.ticks)} ticks)")
+            return EXIT_OK
+        print(divergence.describe(args.left, args.right))
+        return EXIT_TRACES_DIFFER
     difference = first_difference(left, right)
     if difference is None:
         print(f"traces are identical ({len(left.ticks)} ticks)")

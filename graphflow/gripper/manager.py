@@ -113,13 +113,17 @@ class SurfaceGripperManager:
 
     def set_gripper_properties(self, paths: str | Iterable[str], *, max_grip_distance=None,
                                coaxial_force_limit=None, shear_force_limit=None, retry_interval=None) -> None:
-        """Set properties at run time (None leaves one as is); also authored on the gripper prims."""
+        """Set properties at run time (None leaves one as is); also authored on the gripper prims, on the
+        session sub-layer: never on the stage file's layer, which later stages opened in this process share."""
+        from pxr import Usd
+
         for path in [paths] if isinstance(paths, str) else list(paths):
             component = self._require(path)
-            usd_schema.set_gripper_properties(
-                self.stage.GetPrimAtPath(path), max_grip_distance=max_grip_distance,
-                coaxial_force_limit=coaxial_force_limit, shear_force_limit=shear_force_limit,
-                retry_interval=retry_interval)
+            with Usd.EditContext(self.stage, self._edit_layer()):
+                usd_schema.set_gripper_properties(
+                    self.stage.GetPrimAtPath(path), max_grip_distance=max_grip_distance,
+                    coaxial_force_limit=coaxial_force_limit, shear_force_limit=shear_force_limit,
+                    retry_interval=retry_interval)
             self._read_properties(component)
 
     def get_gripper_properties(self, path: str) -> tuple[float, float, float, float]:

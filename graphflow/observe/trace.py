@@ -16,7 +16,7 @@ import sys
 from dataclasses import dataclass
 from importlib import metadata
 from pathlib import Path
-from typing import IO, Any, Iterator
+from typing import IO, Any, Iterator, Sequence
 
 from graphflow import __version__
 from graphflow.errors import BadInput
@@ -120,11 +120,47 @@ def sample_grippers(world) -> dict[str, GripperSample]:
     return samples
 
 
-def initial_grippers(world) -> list[str]:
-    """The surface grippers that exist when a run starts: the stage's gripper prims and any a node made already."""
+def used_grippers(simulation) -> list[str]:
+    """The surface grippers the graph uses, as the run starts.
+
+    A gripper prim of the stage counts when a node input or a check names it (a packaged gripper the
+    graph never touches does not); a LegacySurfaceGripper node's own gripper counts from the start, at
+    the path it will author on its first execIn (the next free ``SurfaceGripper`` under its end
+    effector); a gripper a node already made counts. Grippers made later appear in tick records.
+    """
+    world = simulation.world
     description = getattr(world, "description", None)
-    on_stage = [gripper.path for gripper in getattr(description, "surface_grippers", ())]
-    return sorted(set(on_stage) | set(sample_grippers(world)))
+    on_stage = {gripper.path for gripper in getattr(description, "surface_grippers", ())}
+    document = simulation.document
+    named = {path for node in document.nodes for value in node.inputs.values() for path in _texts(value)}
+    named |= {check["gripper"] for check in document.checks if isinstance(check.get("gripper"), str)}
+    used = (on_stage & named) | set(sample_grippers(world))
+    stage = getattr(world, "stage", None)
+    planned: set[str] = set()
+    for node in simulation.instance.compiled.nodes:
+        if node.spec.id == LEGACY_GRIPPER and stage is not None:
+            for end_effector in _texts(dict(document.node(node.name).inputs).get("endEffectorPrim", ())):
+                path = _next_free(stage, end_effector.rstrip("/") + "/SurfaceGripper", planned)
+                planned.add(path)
+    return sorted(used | planned)
+
+
+LEGACY_GRIPPER = "graphflow.LegacySurfaceGripper"
+
+
+def _texts(value) -> list[str]:
+    if isinstance(value, str):
+        return [value]
+    return [item for item in value if isinstance(item, str)] if isinstance(value, (list, tuple)) else []
+
+
+def _next_free(stage, path: str, taken: set[str]) -> str:
+    """``usd_schema.next_free_path`` that also skips the paths other legacy nodes will take."""
+    candidate, index = path, 0
+    while stage.GetPrimAtPath(candidate) or candidate in taken:
+        index += 1
+        candidate = f"{path}_{index:02d}"
+    return candidate
 
 
 def _holding_force(manager, path: str) -> float | None:
@@ -144,7 +180,8 @@ class TraceRecorder:
     the stream may then be None.
     """
 
-    def __init__(self, simulation, stream: IO[str] | None, *, graph: str | None = None, records: list | None = None):
+    def __init__(self, simulation, stream: IO[str] | None, *, graph: str | None = None, records: list | None = None,
+                 randomized: Sequence[dict] = ()):
         self.simulation = simulation
         self.stream = stream
         self.records = records
@@ -161,7 +198,10 @@ class TraceRecorder:
         from graphflow.observe.trace_scene import SceneSection
 
         self._scene = SceneSection(simulation)
-        self._write_header(graph)
+        description = getattr(simulation.world, "description", None)
+        self._used_grippers = used_grippers(simulation)
+        self._unused = {g.path for g in getattr(description, "surface_grippers", ())} - set(self._used_grippers)
+        self._write_header(graph, list(randomized))
         simulation.add_listener(self)
 
     def on_compute(self, instance, node_name: str, fired: list[str], db) -> None:
@@ -182,6 +222,8 @@ class TraceRecorder:
             record["outputs"] = changed
         grippers = {}
         for path, sample in sample_grippers(self.simulation.world).items():
+            if path in self._unused:
+                continue    # a stage gripper the graph does not use
             fields = sample.fields()
             previous = self._grippers.get(path, {})
             delta = {key: value for key, value in fields.items() if _changed(previous.get(key, _MISSING), value)}
@@ -239,7 +281,7 @@ class TraceRecorder:
                 changed[key] = written[key] = value
         return changed
 
-    def _write_header(self, graph: str | None) -> None:
+    def _write_header(self, graph: str | None, randomized: list[dict]) -> None:
         document = self.simulation.document
         world = self.simulation.world
         compiled = self.instance.compiled
@@ -253,10 +295,12 @@ class TraceRecorder:
             "nodes": {node.name: node.spec.id for node in compiled.nodes},
             "outputs": dict(self._outputs),   # a copy: the recorder updates its own as outputs change
             "phases": phase_outputs(compiled),
-            "grippers": initial_grippers(world),
+            "grippers": self._used_grippers,
             "versions": loaded_versions(),
             **self._scene.header(),
         }
+        if randomized:   # only a randomized run has it, so other traces stay as they were
+            header["randomized"] = randomized
         self._emit(header)
 
 
@@ -334,12 +378,20 @@ class Trace:
 
 def read_trace(path: str | Path) -> Trace:
     """Parse a trace file; raise TraceError naming the line when it is not a trace."""
-    from graphflow.files import FileProblem, loads_strict, read_text
+    from graphflow.files import FileProblem, read_text
 
     try:
-        lines = read_text(path).splitlines()   # regular files only: never reads /dev/zero forever
+        text = read_text(path)   # regular files only: never reads /dev/zero forever
     except FileProblem as error:
         raise TraceError(str(error)) from None
+    return parse_trace(text, path)
+
+
+def parse_trace(text: str, path: str | Path = "<trace>") -> Trace:
+    """A trace from its text (a file's, or one recorded in memory); TraceError naming the line."""
+    from graphflow.files import FileProblem, loads_strict
+
+    lines = text.splitlines()
     records = []
     for number, line in enumerate(lines, start=1):
         try:

@@ -128,6 +128,7 @@ class PyBulletWorld(SceneLookups):
         self._probe: int | None = None          # the collision shape of ``_body_around``
         self._pending_forces: list[tuple[int, int, tuple, tuple | None]] = []
         self._offsets: dict = {}
+        self._joint_torques: dict[str, list[float]] = {}    # the last step's TORQUE_CONTROL forces, by articulation
 
     @property
     def attachment_joints(self):
@@ -158,6 +159,7 @@ class PyBulletWorld(SceneLookups):
         if not self.playing:
             return
         torques = self.joint_control.torques(self.time_step)      # once per stage step, held over its substeps
+        self._joint_torques = {articulation.path: forces for articulation, forces in torques}
         for _ in range(self.substeps):
             self._apply_pre_step_forces(torques)
             self.client.stepSimulation()
@@ -255,6 +257,20 @@ class PyBulletWorld(SceneLookups):
             return ()
         states = self.client.getJointStates(articulation.body_id, articulation.joint_indices)
         return tuple(sign * s[1] for sign, s in zip(articulation.signs, states))
+
+    def joint_efforts(self, articulation_path: str) -> tuple[float, ...]:
+        """Effort (N m or N) each DOF's actuation applied in the last step: the joint torque the drive law
+        set plus what PyBullet's velocity motor applied (``getJointStates``' appliedJointMotorTorque)."""
+        articulation = self._articulation(articulation_path)
+        if not articulation.joint_indices:
+            return ()
+        states = self.client.getJointStates(articulation.body_id, articulation.joint_indices)
+        torques = self._joint_torques.get(articulation.path) or [0.0] * len(states)
+        return tuple(sign * (s[3] + torque) for sign, s, torque in zip(articulation.signs, states, torques))
+
+    def joint_dof_types(self, articulation_path: str) -> tuple[int, ...]:
+        """Per DOF: 0 rotation (revolute), 1 translation (prismatic), as Isaac's joint state reports them."""
+        return tuple(0 if angular else 1 for angular in self._articulation(articulation_path).angular)
 
     def set_joint_targets(self, articulation_path: str, indices: Sequence[int], *,
                           positions: Sequence[float] | None = None, velocities: Sequence[float] | None = None,

@@ -15,10 +15,10 @@ from graphflow.report.verdict import check_entries
 class ReportRecording:
     """Records a simulation's trace in memory for a report; ``write()`` after the run ends."""
 
-    def __init__(self, simulation, graph: str, *, also_to=None, timings: bool = False):
+    def __init__(self, simulation, graph: str, *, also_to=None, timings: bool = False, randomized=()):
         self.records: list[dict] = []
         self.simulation = simulation
-        TraceRecorder(simulation, also_to, graph=graph, records=self.records)
+        TraceRecorder(simulation, also_to, graph=graph, records=self.records, randomized=randomized)
         self.timer = ComputeTimer(simulation) if timings else None
 
     def trace(self) -> Trace:

@@ -76,6 +76,13 @@ class TopicBus:
             transport.send(sent)
         return sent
 
+    def publish_service_part(self, topic: str, type_name: str, message: dict) -> TopicMessage:
+        """A service request or response, already checked (``graphflow.ros2.services``): on the bus and in
+        the trace, but not sent to transports, whose MCAP schemas come from message definitions only."""
+        sent = self._deliver(topic, type_name, message)
+        self.published.append(sent)
+        return sent
+
     def latest(self, topic: str) -> TopicMessage | None:
         """The newest message on *topic* (published here or received), or None."""
         return self._latest.get(topic)

@@ -22,14 +22,25 @@ class MessageError(BadInput):
     """A message or type name that does not fit the ROS 2 definitions; the text names the field."""
 
 
+# message packages Isaac's bridge uses that rosbags' Humble store lacks, from their published .msg files
+EXTRA_DEFINITIONS = {
+    "ackermann_msgs/msg/AckermannDrive": (
+        "float32 steering_angle\nfloat32 steering_angle_velocity\nfloat32 speed\nfloat32 acceleration\nfloat32 jerk\n"),
+    "ackermann_msgs/msg/AckermannDriveStamped": "std_msgs/Header header\nackermann_msgs/AckermannDrive drive\n",
+}
+
+
 @lru_cache(maxsize=None)
 def type_store():
-    """rosbags' store of the standard ROS 2 (Humble) message definitions."""
+    """rosbags' store of the standard ROS 2 (Humble) message definitions, with ``EXTRA_DEFINITIONS``."""
     try:
-        from rosbags.typesys import Stores, get_typestore
+        from rosbags.typesys import Stores, get_types_from_msg, get_typestore
     except ImportError:
         raise MissingExtra("ROS 2 messages", "ros", EXTRAS["ros"]) from None
-    return get_typestore(Stores.ROS2_HUMBLE)
+    store = get_typestore(Stores.ROS2_HUMBLE)
+    for name, text in EXTRA_DEFINITIONS.items():
+        store.register(get_types_from_msg(text, name))
+    return store
 
 
 def type_name(name: str) -> str:
@@ -69,7 +80,7 @@ def _complete_value(kind, value, where: str):
     node_type, details = kind
     node_name = getattr(node_type, "name", str(node_type))
     if node_name == "BASE":
-        return _primitive(details[0], value, where)
+        return primitive(details[0], value, where)
     if node_name == "NAME":
         return _complete_fields(details, {} if value is None else value, where)
     element, length = details
@@ -88,7 +99,8 @@ def _complete_value(kind, value, where: str):
     return items
 
 
-def _primitive(base: str, value, where: str):
+def primitive(base: str, value, where: str):
+    """*value* as a ROS 2 primitive of type *base* (default when None); MessageError names *where*."""
     if base in STRING_TYPES:
         if value is None:
             return ""

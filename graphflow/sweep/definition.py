@@ -5,6 +5,7 @@ checked before anything runs, so a sweep never fails on its hundredth episode fo
 """
 from __future__ import annotations
 
+import dataclasses
 import json
 from dataclasses import dataclass
 from itertools import product
@@ -22,17 +23,16 @@ from graphflow.variants.overrides import (
     apply_stage_overrides,
 )
 from graphflow.variants.randomize import (
-    RandomizationError,
     draw,
+    entry_problems,
     parse_randomization,
-    schema_problems,
+    schema_errors,
     stream,
 )
 
 SWEEP_FORMAT = "graphflow-sweep"
 EPISODES_JSONL, EPISODES_CSV = "episodes.jsonl", "episodes.csv"
 SUMMARY_CSV, SUMMARY_JSON, MANIFEST = "summary.csv", "summary.json", "sweep.json"
-WILSON_Z = 1.959963984540054   # the 97.5 % quantile of the standard normal: a two-sided 95 % interval
 
 
 class SweepError(BadInput):
@@ -140,75 +140,139 @@ def _json_number(value):
 
 
 def load_sweep(path: str) -> Sweep:
-    """Read, schema-check and resolve a sweep file; every override is checked before anything runs."""
+    """Read, schema-check and resolve a sweep file; every problem of it at once, before anything runs.
+
+    A schema problem does not hide the rest: the sections the schema accepted (the graph, the other
+    overrides, the metrics) are still checked against the graph and its stage.
+    """
     data = read_json(path)
-    problems = schema_problems(data, path)
-    if problems:
-        raise SweepError(problems[0])
-    if data["formatVersion"][0] != 1:
+    errors = schema_errors(data, path)
+    problems = [line for _where, line in errors]
+    broken = {where[0] for where, _line in errors if where}
+    if not isinstance(data, dict) or not isinstance(data.get("graph"), str) or broken & {"graph", "formatVersion"}:
+        raise SweepError("\n".join(problems))     # nothing further can be checked without the graph
+    if data.get("formatVersion", [1])[0] != 1:
         raise SweepError(f"{path}: formatVersion {data['formatVersion']} is not supported (this runtime reads 1.x)")
     graph_path = Path(path).resolve().parent / data["graph"]
     graph_data = read_json(graph_path)
-    sweep = Sweep(data, path, graph_data, str(graph_path))
-    _check(sweep)
-    return sweep
+    usable = {key: value for key, value in data.items() if key not in broken or key == "randomize"}
+    randomize = data.get("randomize", [])
+    broken_entries = {where[1] for where, _line in errors if len(where) >= 2 and where[0] == "randomize"}
+    if not isinstance(randomize, list):
+        randomize, broken_entries = [], set()
+    sweep = Sweep(usable, path, graph_data, str(graph_path))
+    problems += _problems(sweep, randomize, broken_entries)
+    if problems:
+        raise SweepError("\n".join(problems))
+    return Sweep(data, path, graph_data, str(graph_path))
 
 
-def _check(sweep: Sweep) -> None:
-    """Fail before any episode runs: the graph, conflicting targets, and every point's overrides."""
+def check_sweep(sweep: Sweep) -> None:
+    """Refuse a sweep built in memory (a rate scenario's) as a sweep file is refused: every problem at once."""
+    randomize = sweep.data.get("randomize", [])
+    problems = _problems(sweep, randomize if isinstance(randomize, list) else [], set())
+    if problems:
+        raise SweepError("\n".join(problems))
+
+
+def _problems(sweep: Sweep, randomize: list, broken_entries: set) -> list[str]:
+    """Every problem found before any episode runs: the graph, conflicting targets, each override, the metrics."""
     from graphflow.document import GraphError, parse_document
 
     try:
         document = parse_document(json.loads(json.dumps(sweep.graph_data)), sweep.graph_source)
     except GraphError as error:
-        raise SweepError(str(error.problems[0])) from None
-    try:
-        randomization = sweep.randomization()
-    except RandomizationError as error:
-        raise SweepError(str(error)) from None
+        return [str(problem) for problem in error.problems]
+    problems: list[str] = []
+    kept = []
+    for index, entry in enumerate(randomize):
+        if index not in broken_entries:
+            found = entry_problems(entry, f"{sweep.source}: randomize/{index}")
+            problems += found
+            kept += [] if found else [entry]
+    sweep = dataclasses.replace(sweep, data={**sweep.data, "randomize": kept})   # the rest checked without them
+    randomization = sweep.randomization()
     swept = set(sweep.parameter_names) | set(sweep.data.get("set", {}))
     for target in randomization.targets:
         if target in swept:
-            raise SweepError(f"{sweep.source}: {target} is both swept (set/grid/samples) and randomized; "
-                             "the randomized value would hide the swept one")
+            problems.append(f"{sweep.source}: {target} is both swept (set/grid/samples) and randomized; "
+                            "the randomized value would hide the swept one")
     grid, samples = sweep.data.get("grid", {}), sweep.data.get("samples", {}).get("parameters", {})
     fixed = sweep.data.get("set", {})
     for target in [*grid, *samples]:
         if (target in grid and target in samples) or target in fixed:
-            raise SweepError(f"{sweep.source}: {target} appears twice (in two of set, grid and samples)")
-    for name in sweep.metric_names:
-        if sweep.metric_names.count(name) > 1:
-            raise SweepError(f"{sweep.source}: metrics: the name {name!r} is used twice")
-    stage = None
-    episodes = sweep.episodes()
-    first_of_point = {episode.point: episode for episode in reversed(episodes)}
+            problems.append(f"{sweep.source}: {target} appears twice (in two of set, grid and samples)")
+    names = sweep.metric_names
+    problems += [f"{sweep.source}: metrics: the name {name!r} is used twice"
+                 for name in dict.fromkeys(names) if names.count(name) > 1]
     try:
-        for episode in sorted(first_of_point.values(), key=lambda e: e.index):
+        from graphflow.verdicts.checked_run import ScriptedInputs
+        ScriptedInputs.of_document(document)     # the scenario's inputs every episode attaches
+    except BadInput as error:
+        problems += error.lines()
+    stage = _StageForChecks(document)
+    problems += _override_problems(sweep, document, stage)
+    problems += _metric_prim_problems(sweep, document, stage)
+    return problems
+
+
+class _StageForChecks:
+    """The graph's stage opened once for the checks; each edit is tried on a cleared session layer."""
+
+    def __init__(self, document):
+        self.document, self.stage = document, None
+
+    def fresh(self):
+        if self.stage is None:
+            self.stage = Variant(self.document, ()).open_stage()
+        else:
+            self.stage.GetSessionLayer().Clear()
+        return self.stage
+
+
+def _override_problems(sweep: Sweep, document, stage: _StageForChecks) -> list[str]:
+    """Each distinct override alone (so every bad one is named with its own reason), then each point's together."""
+    problems: list[str] = []
+    episodes = sweep.episodes()
+    first_of_point = sorted({e.point: e for e in reversed(episodes)}.values(), key=lambda e: e.index)
+    alone: dict[str, Override | PoseJitter] = {}
+    for episode in first_of_point:
+        for edit in sweep.edits(episode):
+            alone.setdefault(edit.label, edit)
+    for edit in alone.values():
+        try:
+            if edit.on_stage:
+                apply_stage_overrides(stage.fresh(), [edit])
+            else:
+                apply_node_overrides(document, [edit])
+        except OverrideError as error:
+            problems.append(str(error))
+    if problems:
+        return problems
+    try:
+        for episode in first_of_point:
             edits = sweep.edits(episode)
             apply_node_overrides(document, [e for e in edits if not e.on_stage])
             stage_edits = [e for e in edits if e.on_stage]
             if stage_edits:
-                if stage is None:
-                    stage = Variant(document, tuple(stage_edits)).open_stage()
-                else:
-                    stage.GetSessionLayer().Clear()
-                    apply_stage_overrides(stage, stage_edits)
+                apply_stage_overrides(stage.fresh(), stage_edits)
     except OverrideError as error:
-        raise SweepError(str(error)) from None
-    _check_metric_prims(sweep, document, stage)
+        problems.append(str(error))
+    return problems
 
 
-def _check_metric_prims(sweep: Sweep, document, stage) -> None:
+def _metric_prim_problems(sweep: Sweep, document, stage: _StageForChecks) -> list[str]:
     """Every prim a metric names must be on the stage (else every episode would fail the same way)."""
+    problems = []
     for index, metric in enumerate(sweep.data.get("metrics", [])):
         kind, spec = next((k, v) for k, v in metric.items() if k != "name")
         paths = [spec[key] for key in ("prim", "relativeTo", "gripper") if key in spec]
         if kind == "timeToFinish":
             continue
         if document.settings.get("stage") is None:
-            raise SweepError(f"{sweep.source}: metrics/{index} ({metric['name']}): {kind} needs a graph with a stage")
-        if stage is None:
-            stage = Variant(document, ()).open_stage()
-        for path in paths:
-            if not stage.GetPrimAtPath(path):
-                raise SweepError(f"{sweep.source}: metrics/{index} ({metric['name']}): the stage has no prim {path}")
+            problems.append(f"{sweep.source}: metrics/{index} ({metric['name']}): {kind} needs a graph with a stage")
+            continue
+        usd_stage = stage.fresh()
+        problems += [f"{sweep.source}: metrics/{index} ({metric['name']}): the stage has no prim {path}"
+                     for path in paths if not usd_stage.GetPrimAtPath(path)]
+    return problems

@@ -173,6 +173,7 @@ class EpisodeRunner:
 
     def _simulation_for(self, edits):
         from graphflow.runtime import Simulation, create_world_for
+        from graphflow.verdicts.checked_run import ScriptedInputs
 
         node_edits = [(e.target, e.value) for e in edits if not e.on_stage]
         stage_edits = [e for e in edits if e.on_stage]
@@ -191,6 +192,7 @@ class EpisodeRunner:
         self.rebuilds += 1
         self._episode = _EpisodeListener(document)
         self._simulation = Simulation(document, world=world, listeners=[self._warnings, self._episode])
+        ScriptedInputs.of_document(document).attach(world)   # the scenario's keys, gamepad and topics, as run and test
         self._simulation_key = key
         return self._simulation
 

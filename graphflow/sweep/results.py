@@ -15,10 +15,10 @@ from graphflow.sweep.definition import (
     MANIFEST,
     SUMMARY_CSV,
     SUMMARY_JSON,
-    WILSON_Z,
     Sweep,
     SweepError,
 )
+from graphflow.verdicts.rates import wilson_interval
 
 # ------------------------------------------------------------------ results folder
 
@@ -125,17 +125,6 @@ def _write_atomically(path: Path, text: str) -> None:
 
 
 # ------------------------------------------------------------------ summary
-
-def wilson_interval(successes: int, n: int, z: float = WILSON_Z) -> tuple[float, float]:
-    """Wilson score interval of a binomial proportion (good at 0 %, 100 % and small n, unlike p ± z·se)."""
-    if n == 0:
-        return (0.0, 1.0)
-    p = successes / n
-    denominator = 1 + z * z / n
-    centre = (p + z * z / (2 * n)) / denominator
-    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / denominator
-    return (max(0.0, centre - half), min(1.0, centre + half))
-
 
 def summarize(sweep: Sweep, records: Sequence[dict]) -> list[dict]:
     """Per parameter point: n, passed, success rate with its 95 % Wilson interval, metric medians."""

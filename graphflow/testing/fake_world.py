@@ -230,6 +230,28 @@ class FakeWorld:
     def joint_velocities(self, articulation_path: str) -> tuple[float, ...]:
         return (0.0,) * len(self._articulation(articulation_path)["names"])
 
+    def joint_paths(self, articulation_path: str) -> tuple[str, ...]:
+        """Joints are children of the articulation root here."""
+        root = self._articulation_root(articulation_path)
+        return tuple(f"{root}/{name}" for name in self.articulations[root]["names"])
+
+    def joint_efforts(self, articulation_path: str) -> tuple[float, ...]:
+        """The efforts last commanded: joints here are ideal actuators that apply exactly what they are told."""
+        return tuple(self.articulations[self._articulation_root(articulation_path)]["efforts"])
+
+    def joint_dof_types(self, articulation_path: str) -> tuple[int, ...]:
+        """Every joint of a fake articulation is revolute."""
+        return (0,) * len(self.articulations[self._articulation_root(articulation_path)]["names"])
+
+    def _articulation_root(self, path: str) -> str:
+        """The articulation *path* is, or whose joint it names."""
+        if path in self.articulations:
+            return path
+        root, _, name = path.rpartition("/")
+        if root in self.articulations and name in self.articulations[root]["names"]:
+            return root
+        raise WorldError(f"{path} is not an articulation or joint of this fake world")
+
     def set_joint_targets(self, articulation_path: str, indices: Sequence[int], *,
                           positions: Sequence[float] | None = None, velocities: Sequence[float] | None = None,
                           efforts: Sequence[float] | None = None) -> None:

@@ -20,12 +20,13 @@ VARIABLE_NODES = ("omni.graph.core.ReadVariable", "omni.graph.core.WriteVariable
 
 # USD value type name -> graphflow type name (graphflow.types)
 _ROLES = {"vector": "vector", "point": "point", "normal": "normal", "color": "color", "texCoord": ""}
-_SCALARS = ("bool", "int", "int64", "uint", "uint64", "float", "double", "half", "token", "string")
+_SCALARS = ("bool", "uchar", "int", "int64", "uint", "uint64", "float", "double", "half", "token", "string")
 
 # (node type id, authored version) -> {old port: new port, or None when the port was removed}
 # from Isaac's updateNodeVersion code (isaacsim.ros2.nodes, isaacsim.sensors.physx)
 PORT_CHANGES: dict[tuple[str, int], dict[str, str | None]] = {
     ("isaacsim.ros2.bridge.ROS2SubscribeJointState", 1): {"inputs:targetPrim": None},
+    ("omni.graph.nodes.Timer", 1): {"outputs:alpha": "outputs:value"},     # Kit's node library, Timer v1 and v2
 }
 
 
@@ -121,3 +122,53 @@ def prefixed(part: dict, prefix: str) -> dict:
         "variables": [{**v, "name": variables[v["name"]]} for v in part["variables"]],
         "missingAssets": [{**m, "node": prefix + m["node"]} for m in part["missingAssets"]],
     }
+
+
+# graph instancing (omni.usd.schema.omnigraph): prims with OmniGraphAPI name graphs in their omniGraphs relationship
+INSTANCE_TOKEN = "_OMNI_GRAPH_TARGET"     # Kit replaces it in prim paths with the instance's target at run time
+INSTANCES_RELATIONSHIP = "omniGraphs"
+GRAPH_TARGET_NODES = ("omni.graph.nodes.GraphTarget", "omni.graph.nodes.GetGraphTargetPrim")
+
+
+def graph_targets(stage, graph_prim, label: str, value_of, warnings: list[str]) -> list[str]:
+    """The prims a graph runs for, as Kit evaluates it: each prim that names it in its omniGraphs relationship
+    (an instanced graph: evaluationMode Automatic or Instanced), else the graph prim itself (Standalone, or
+    Automatic without instances). An Instanced graph no prim names never runs: no target, with a line."""
+    graph_path = str(graph_prim.GetPath())
+    mode = value_of(graph_prim.GetAttribute("evaluationMode")) or "Automatic"
+    instances = [str(prim.GetPath()) for prim in stage.Traverse()
+                 if prim.HasRelationship(INSTANCES_RELATIONSHIP)
+                 and graph_path in (str(t) for t in prim.GetRelationship(INSTANCES_RELATIONSHIP).GetTargets())]
+    where = f"{label}: {graph_path}"
+    if mode == "Standalone":
+        if instances:
+            warnings.append(f"{where}: evaluationMode Standalone: the prims naming it ({', '.join(instances)}) "
+                            "are ignored, as Kit does")
+        return [graph_path]
+    if instances:
+        warnings.append(f"{where}: an instanced graph, imported once per target prim: {', '.join(instances)}")
+        return instances
+    if mode == "Instanced":
+        warnings.append(f"{where}: evaluationMode Instanced but no prim names it in omniGraphs, so Kit never "
+                        "evaluates it; not imported")
+        return []
+    return [graph_path]
+
+
+def bind_target(part: dict, target: str) -> dict:
+    """One graph's parts run for *target*: the instance token in input paths replaced by it, and the graph-target
+    nodes told it (their targetPath input)."""
+    def bound(value):
+        if isinstance(value, str):      # as a path (/_OMNI_GRAPH_TARGET/child) or a bare token
+            return value.replace("/" + INSTANCE_TOKEN, target).replace(INSTANCE_TOKEN, target)
+        if isinstance(value, (list, tuple)):
+            return [bound(item) for item in value]
+        return value
+
+    nodes = []
+    for node in part["nodes"]:
+        inputs = {name: bound(value) for name, value in node.get("inputs", {}).items()}
+        if node["type"] in GRAPH_TARGET_NODES:
+            inputs["targetPath"] = target
+        nodes.append({**node, "inputs": inputs} if inputs else node)
+    return {**part, "nodes": nodes}

@@ -48,6 +48,7 @@ _RENDERING = {
             "ROS2PublishBbox3D": RENDERED_IMAGE, "ROS2PublishSemanticLabels": RENDERED_IMAGE,
             "ROS2PublishObjectIdMap": RENDERED_IMAGE, "ROS2PublishPointCloud": RTX_SENSOR,
             "ROS2PublishLaserScan": RTX_SENSOR},
+    ("omni.graph.nodes",): {"GpuInteropRenderProductEntry": RENDER_PRODUCT},
     _RTX: {"IsaacExtractRTXSensorPointCloud": RTX_SENSOR, "IsaacComputeRTXLidarFlatScan": RTX_SENSOR,
            "IsaacCreateRTXLidarScanBuffer": RTX_SENSOR, "IsaacReadRTXLidarData": RTX_SENSOR},
 }
@@ -78,7 +79,10 @@ COMMAND_NODE_SUFFIX = "_command"
 PICK_PLACE_ID = "graphflow.PickPlaceController"
 PICK_PLACE_OLD_INPUTS = ("robotModel", "robotPrimPath", "usePath", "targetPrim")
 
-GENERIC_PUBLISHERS = ("isaacsim.ros2.bridge.ROS2Publisher", "omni.isaac.ros2_bridge.ROS2Publisher")
+# nodes whose per-field dynamic inputs (message fields; a service's Request:* / Response:*) become messageFields
+GENERIC_PUBLISHERS = ("isaacsim.ros2.bridge.ROS2Publisher", "omni.isaac.ros2_bridge.ROS2Publisher",
+                      "isaacsim.ros2.bridge.OgnROS2ServiceClient", "isaacsim.ros2.bridge.OgnROS2ServiceServerResponse",
+                      "omni.graph.action.SendMessageBusEvent")
 GENERIC_SUBSCRIBERS = ("isaacsim.ros2.bridge.ROS2Subscriber", "omni.isaac.ros2_bridge.ROS2Subscriber")
 MESSAGE_FIELDS = "messageFields"
 

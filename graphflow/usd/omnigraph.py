@@ -26,7 +26,16 @@ from graphflow.document import (
 )
 from graphflow.errors import BadInput
 from graphflow.registry import Registry, default_registry
-from graphflow.usd.graph_parts import PORT_CHANGES, graph_prefixes, graph_variables, map_version, prefixed
+from graphflow.usd.graph_parts import (
+    INSTANCE_TOKEN,
+    PORT_CHANGES,
+    bind_target,
+    graph_prefixes,
+    graph_targets,
+    graph_variables,
+    map_version,
+    prefixed,
+)
 from graphflow.usd.node_mapping import (
     GENERIC_PUBLISHERS,
     LEGACY_GRIPPER_COMMANDS,
@@ -100,12 +109,18 @@ def import_graph(stage_path: str, *, graph_path: str | None = None, output_path:
 
     warnings: list[str] = []
     problems: list[str] = []
-    prefixes = graph_prefixes(selected) if len(selected) > 1 else {selected[0]: ""}
+    runs = [(path, target) for path in selected
+            for target in graph_targets(stage, stage.GetPrimAtPath(path), label, _value, warnings)]
+    keys = [path if target == path else target for path, target in runs]    # an instance is named by its target
+    prefixes = graph_prefixes(keys) if len(keys) > 1 else {key: "" for key in keys}
     merged: dict = {"nodes": [], "connections": [], "ui": {}, "variables": [], "missingAssets": []}
-    for path in selected:
-        part = _import_one(stage, stage.GetPrimAtPath(path), label, registry, skip_unknown, warnings, problems)
-        for key, value in prefixed(part, prefixes[path]).items():
-            merged[key].update(value) if key == "ui" else merged[key].extend(value)
+    parts: dict = {}
+    for (path, target), key in zip(runs, keys):
+        if path not in parts:
+            parts[path] = _import_one(stage, stage.GetPrimAtPath(path), label, registry, skip_unknown, warnings,
+                                      problems)
+        for name, value in prefixed(bind_target(parts[path], target), prefixes[key]).items():
+            merged[name].update(value) if name == "ui" else merged[name].extend(value)
     if problems:
         raise ImportProblem(problems)
 
@@ -168,6 +183,8 @@ def _import_one(stage, graph_prim, label: str, registry: Registry, skip_unknown:
         for attribute in node_type.spec.inputs:
             if attribute.attr_type.base == "target":
                 for target in inputs.get(attribute.name, ()):
+                    if INSTANCE_TOKEN in target:
+                        continue      # bound to each instance's target prim later (bind_target)
                     missing = missing_target(stage, target)
                     if missing:
                         warnings.append(f"{label}: node '{name}' input 'inputs:{attribute.name}': {missing[0]}")

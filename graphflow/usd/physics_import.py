@@ -68,8 +68,10 @@ def open_stage(stage_or_path):
     path = Path(os.fspath(stage_or_path))
     if not path.is_file():
         raise StageError(f"{path}: no such stage file")
+    from graphflow.usd.opening import open_composed
+
     try:
-        stage = Usd.Stage.Open(str(path))
+        stage = open_composed(path)
     except Tf.ErrorException as error:
         raise StageError(f"{path}: not a USD stage ({_usd_error_reason(error)})") from None
     if stage is None:

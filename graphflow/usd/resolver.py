@@ -1,4 +1,4 @@
-"""Finding stages: packaged assets (``asset:NAME``) and paths relative to a graph file."""
+"""Finding stages: packaged assets (``asset:NAME``, ``graphflow/NAME``, ``@pkg/NAME@``) and paths relative to a graph file."""
 from __future__ import annotations
 
 import os
@@ -23,11 +23,17 @@ def resolve_stage(reference: str, base_dir: str | os.PathLike | None = None) -> 
     """Turn a graph document's stage value into a file path.
 
     ``asset:NAME`` names a packaged asset; anything else is a path, relative
-    paths being taken from *base_dir* (the graph file's folder).
+    paths being taken from *base_dir* (the graph file's folder). As in USD (``@...@`` is accepted),
+    a relative path that is not there is looked up in the asset roots: ``graphflow/ur10.usda``.
     """
+    from graphflow.usd.asset_roots import root_file
+
+    reference = reference[1:-1] if len(reference) > 2 and reference[0] == reference[-1] == "@" else reference
     if reference.startswith(ASSET_PREFIX):
         return asset_path(reference[len(ASSET_PREFIX):])
     path = Path(reference).expanduser()
     if not path.is_absolute() and base_dir is not None:
         path = Path(base_dir) / path
+    if not path.exists() and not Path(reference).is_absolute():
+        return root_file(reference) or path
     return path

@@ -79,9 +79,10 @@ def deep_validate(document: GraphDocument, registry: Registry | None = None, *, 
         skipped = {(problem.node, problem.attribute) for problem in missing}
         errors.extend(problem for problem in _stage_problems(document, registry, reference, parsed)
                       if (problem.node, problem.attribute) not in skipped)
+    warnings = _wiring_warnings(document, registry) + unset_target_warnings(document, registry)
     if not allow_missing_assets:
-        return missing + errors, _wiring_warnings(document, registry)
-    return errors, missing + _wiring_warnings(document, registry)
+        return missing + errors, warnings
+    return errors, missing + warnings
 
 
 def _spec_id(registry, node) -> str:
@@ -276,4 +277,38 @@ def _wiring_warnings(document: GraphDocument, registry) -> list[Problem]:
             found.append(Problem(source, "never runs: no event source reaches its exec inputs", node=node.name))
         elif spec.is_pure and spec.outputs and node.name not in read:
             found.append(Problem(source, "computes for nothing: no connection reads its outputs", node=node.name))
+    return found
+
+
+PRIM_VALUE_NODES = frozenset({"omni.graph.nodes.ConstantPrims", "omni.graph.nodes.GetPrimPaths",
+                              "omni.graph.nodes.FindPrims"})   # their targets are values: empty is a value
+
+
+def unset_target_warnings(document: GraphDocument, registry: Registry | None = None) -> list[Problem]:
+    """Required ``target`` inputs neither authored nor connected: the node has no prim to work on.
+
+    Required: not optional, not "(unset: ...)" in its description, and no ``...Path`` input of the same
+    node given instead (``robotPath`` for ``targetPrim``). Nodes whose targets are plain values
+    (``ConstantPrims`` and the like) are left alone.
+    """
+    registry = registry or default_registry()
+    connected = {(c.dst_node, c.dst_attr) for c in document.connections}
+    found = []
+    for node in document.nodes:
+        node_type = registry.get(node.type)
+        if node_type is None or node_type.spec.id in PRIM_VALUE_NODES:
+            continue
+
+        def given(name: str) -> bool:
+            return bool(node.inputs.get(name)) or (node.name, f"inputs:{name}") in connected
+
+        inputs = node_type.spec.inputs
+        if any(a.name.endswith("Path") and given(a.name) for a in inputs):
+            continue
+        for attribute in inputs:
+            if (attribute.type == "target" and not attribute.optional and "(unset:" not in attribute.description
+                    and attribute.default is None and not given(attribute.name)):
+                found.append(Problem(document.source, "required target is unset (neither authored nor connected): "
+                                     "the node has no prim to work on and fails at its first compute",
+                                     node=node.name, attribute=f"inputs:{attribute.name}"))
     return found

@@ -299,6 +299,7 @@ class Variant:
 
     document: GraphDocument
     stage_edits: tuple = ()
+    drawn: tuple = ()      # what --randomize drew, as JSON records (the trace header's ``randomized``)
 
     def create_world(self, *, gui: bool = False):
         """The document's world with the stage edits on the session layer (as ``runtime.create_world_for``)."""
@@ -322,12 +323,11 @@ class Variant:
         stage_reference = self.document.settings.get("stage")
         if stage_reference is None:
             raise OverrideError(f"{self.stage_edits[0].label}: the graph names no stage (settings.stage)")
-        from pxr import Usd
-
+        from graphflow.usd.opening import open_composed
         from graphflow.usd.resolver import resolve_stage
 
         path = resolve_stage(stage_reference, self.document.base_dir)
-        stage = Usd.Stage.Open(str(path))
+        stage = open_composed(path)
         if stage is None:
             raise OverrideError(f"{path}: not a USD stage")
         apply_stage_overrides(stage, self.stage_edits)

@@ -20,14 +20,16 @@ the other entries' draws unchanged.
 """
 from __future__ import annotations
 
+import dataclasses
 import json
+import logging
 import math
 import random
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
 from statistics import NormalDist
-from typing import Any, Mapping, Sequence
+from typing import Any, Iterable, Mapping, Sequence
 
 from graphflow.files import FileProblem, read_json
 from graphflow.model import GraphDocument
@@ -40,6 +42,7 @@ from graphflow.variants.overrides import (
     parse_set,
 )
 
+_log = logging.getLogger("graphflow.randomize")
 DISTRIBUTIONS = ("uniform", "normal", "logUniform", "choice")
 _STANDARD_NORMAL = NormalDist()
 
@@ -57,25 +60,57 @@ def sweep_schema() -> dict:
 
 def schema_problems(data: Any, source: str, definition: str | None = None) -> list[str]:
     """One line per schema violation of *data* (the whole sweep schema, or one of its ``$defs``)."""
+    return [line for _path, line in schema_errors(data, source, definition)]
+
+
+def schema_errors(data: Any, source: str, definition: str | None = None) -> list[tuple[tuple, str]]:
+    """(JSON path, line) per schema violation, each with the most telling reason (``_reason``)."""
     import jsonschema
 
     schema = sweep_schema()
     if definition is not None:
         schema = {"$defs": schema["$defs"], "$ref": f"#/$defs/{definition}"}
     validator = jsonschema.Draft202012Validator(schema)
-    problems = []
+    found: dict[tuple, list[str]] = {}
     for error in sorted(validator.iter_errors(data), key=lambda e: [str(p) for p in e.absolute_path]):
-        location = "/".join(str(p) for p in error.absolute_path) or "document"
-        problems.append(f"{source}: {location}: {_short(error)}")
+        path, reason = _explain(error)
+        reasons = found.setdefault(path, [])
+        if reason not in reasons:
+            reasons.append(reason)
+    problems = []
+    for path, reasons in found.items():
+        if any(r.startswith("unknown distribution") for r in reasons):   # says more than "needs one of"
+            reasons = [r for r in reasons if not r.startswith("needs one of")]
+        location = "/".join(str(p) for p in path) or "document"
+        problems.extend((path, f"{source}: {location}: {reason}") for reason in reasons)
     return problems
 
 
-def _short(error) -> str:
-    """The most specific message of a schema error (oneOf/anyOf errors name their best sub-error)."""
-    if error.context:
-        best = min(error.context, key=lambda e: (-len(e.absolute_path), len(e.message)))
-        return best.message
-    return error.message
+def _explain(error) -> tuple[tuple, str]:
+    """(where, the real reason) of a schema error: for a ``oneOf`` (a randomize entry is a ``set`` or a ``pose``
+    entry; a distribution is one of four), the reason of the alternative the value was meant to be."""
+    where = tuple(error.absolute_path)
+    if error.validator == "additionalProperties" and set(DISTRIBUTIONS) <= set(error.schema.get("properties", {})):
+        unknown = sorted(set(error.instance) - set(error.schema["properties"]))
+        return where, (f"unknown distribution {', '.join(map(repr, unknown))} "
+                       f"(one of {', '.join(DISTRIBUTIONS)}, with an optional clip)")
+    if error.validator != "oneOf":
+        return where, error.message
+    alternatives = error.schema["oneOf"]
+    if not error.context and isinstance(error.instance, dict):
+        given = [key for branch in alternatives for key in branch.get("required", ()) if key in error.instance]
+        return where, f"gives {' and '.join(map(repr, given))}; use only one of them"
+    by_branch: dict[int, list] = {}
+    for sub in error.context:
+        by_branch.setdefault(sub.relative_schema_path[0], []).append(sub)
+    meant = [errors for errors in by_branch.values()
+             if not any(e.validator in ("required", "type") and not e.relative_path for e in errors)]
+    if len(meant) != 1 and not isinstance(error.instance, dict):
+        return where, error.message
+    if len(meant) != 1:
+        keys = [key for branch in alternatives for key in branch.get("required", ())]
+        return where, f"needs one of {', '.join(map(repr, keys))}"
+    return _explain(max(meant[0], key=lambda e: (len(e.absolute_path), e.validator == "additionalProperties")))
 
 
 def stream(*key) -> random.Random:
@@ -169,48 +204,80 @@ def _plain(value):
 
 
 def parse_randomization(entries: Sequence[Mapping[str, Any]], source: str) -> Randomization:
-    """Check entries the schema already accepted: distributions, targets, offsets of three."""
-    for index, entry in enumerate(entries):
-        where = f"{source}: randomize/{index}"
-        distributions = [("", _distribution_of(entry))] if "set" in entry else [
-            (f"{key}: ", entry[key]) for key in ("offset", "yawDegrees") if key in entry]
-        for prefix, distribution in distributions:
-            problem = distribution_problems(distribution)
-            if problem:
-                raise RandomizationError(f"{where}: {prefix}{problem}")
-        if "set" in entry:
-            try:
-                Override(entry["set"], None, origin=where).parts()
-            except OverrideError as error:
-                raise RandomizationError(str(error)) from None
-        if "offset" in entry and "choice" not in entry["offset"]:
-            kind = next(k for k in ("uniform", "normal", "logUniform") if k in entry["offset"])
-            if not (isinstance(entry["offset"][kind][0], list) and len(entry["offset"][kind][0]) == 3):
-                raise RandomizationError(f"{where}: offset: the bounds must be lists of three numbers (x, y, z in m)")
+    """Check entries the schema already accepted: distributions, targets, offsets of three; every problem at once."""
+    problems = randomization_problems(entries, source)
+    if problems:
+        raise RandomizationError("\n".join(problems))
     return Randomization(tuple(entries), source)
 
 
+def randomization_problems(entries: Sequence[Any], source: str, skip: Iterable[int] = ()) -> list[str]:
+    """One line per problem the schema cannot see in *entries* (those in *skip* already failed the schema)."""
+    skipped = set(skip)
+    return [problem for index, entry in enumerate(entries)
+            if index not in skipped and isinstance(entry, Mapping)
+            for problem in entry_problems(entry, f"{source}: randomize/{index}")]
+
+
+def entry_problems(entry: Mapping[str, Any], where: str) -> list[str]:
+    """The problems of one schema-valid randomize entry, each line starting with *where*."""
+    problems = []
+    distributions = [("", _distribution_of(entry))] if "set" in entry else [
+        (f"{key}: ", entry[key]) for key in ("offset", "yawDegrees") if key in entry]
+    problems.extend(f"{where}: {prefix}{problem}" for prefix, distribution in distributions
+                    if (problem := distribution_problems(distribution)))
+    if "set" in entry:
+        try:
+            Override(entry["set"], None, origin=where).parts()
+        except OverrideError as error:
+            problems.append(str(error))
+    if "offset" in entry and "choice" not in entry["offset"]:
+        kind = next(k for k in ("uniform", "normal", "logUniform") if k in entry["offset"])
+        if not (isinstance(entry["offset"][kind][0], list) and len(entry["offset"][kind][0]) == 3):
+            problems.append(f"{where}: offset: the bounds must be lists of three numbers (x, y, z in m)")
+    return problems
+
+
 def load_randomization(path: str) -> Randomization:
-    """The ``randomize`` list of a sweep file or of a file holding only ``{"randomize": [...]}``."""
+    """The ``randomize`` list of a sweep file, of a file holding only ``{"randomize": [...]}``, or of a graph's
+    ``scenario`` section (a rate scenario's episodes re-run with ``--randomize`` naming the graph itself)."""
     try:
         data = read_json(path)
     except FileProblem as error:
         raise RandomizationError(str(error)) from None
-    except json.JSONDecodeError as error:
-        raise RandomizationError(f"{path}: malformed JSON at line {error.lineno} column {error.colno}: {error.msg}") from None
-    problems = schema_problems(data, path, "randomizationFile")
+    if isinstance(data, dict) and data.get("format") == "graphflow":
+        data = {"randomize": data.get("scenario", {}).get("randomize", [])}
+    errors = schema_errors(data, path, "randomizationFile")
+    entries = data.get("randomize") if isinstance(data, dict) else None
+    problems = [line for _path, line in errors]
+    if isinstance(entries, list):
+        broken = {p[1] for p, _line in errors if len(p) >= 2 and p[0] == "randomize"}
+        problems += randomization_problems(entries, path, skip=broken)
     if problems:
-        raise RandomizationError(problems[0])
-    return parse_randomization(data["randomize"], path)
+        raise RandomizationError("\n".join(problems))
+    return Randomization(tuple(entries), path)
 
 
 def variant_for_run(document: GraphDocument, set_texts: Sequence[str], randomize_file: str | None,
                      seed: int) -> Variant:
     """What ``graphflow run --set ... [--randomize FILE --seed N]`` runs; raises OverrideError.
 
-    Node overrides are checked here; stage edits when ``Variant.create_world`` opens the stage.
+    Node overrides are checked here; stage edits when ``Variant.create_world`` opens the stage. What
+    the randomization drew is logged (``--log-level info``) and kept for the trace header.
     """
     edits: list = [parse_set(text) for text in set_texts]
+    drawn: list = []
     if randomize_file is not None:
-        edits.extend(load_randomization(randomize_file).draw(seed))
-    return make_variant(document, edits)
+        draws = load_randomization(randomize_file).draw(seed)
+        edits.extend(draws)
+        drawn = [drawn_record(edit) for edit in draws]
+        for record in drawn:
+            _log.info("%s: seed %d drew %s", randomize_file, seed, json.dumps(record))
+    return dataclasses.replace(make_variant(document, edits), drawn=tuple(drawn))
+
+
+def drawn_record(edit: Override | PoseJitter) -> dict:
+    """A drawn value as JSON: ``{"set": TARGET, "value": V}`` or ``{"pose": PRIM, "offset": [...], "yawDegrees": D}``."""
+    if isinstance(edit, PoseJitter):
+        return {"pose": edit.prim, "offset": list(edit.offset), "yawDegrees": edit.yaw_degrees}
+    return {"set": edit.target, "value": edit.value}

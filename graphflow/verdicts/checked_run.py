@@ -14,6 +14,7 @@ decided here once:
 from __future__ import annotations
 
 import contextlib
+import re
 import shlex
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -38,6 +39,7 @@ class Verdict:
     output: list[str] = field(default_factory=list)
     trace: str | None = None
     expect_failure: tuple[str, ...] = ()   # the scenario section's expectFailure texts
+    expect_pattern: str | None = None      # a table case's expected failure: a regular expression
     stopped_by_graph: bool = False
     run_error: str | None = None   # the failing node's line, when the run stopped on one
 
@@ -49,24 +51,34 @@ class Verdict:
     @property
     def passed(self) -> bool:
         """The scenario's verdict: the run passed, or it failed as its expectFailure says."""
-        if not self.expect_failure:
+        if not self.expects_failure:
             return self.run_passed
         return not self.run_passed and not self.missing_failures()
 
+    @property
+    def expects_failure(self) -> bool:
+        return bool(self.expect_failure) or self.expect_pattern is not None
+
+    def expectations(self) -> list[str]:
+        return [*map(repr, self.expect_failure), *([f"/{self.expect_pattern}/"] if self.expect_pattern else [])]
+
     def missing_failures(self) -> list[str]:
         text = "\n".join(self.failures)
-        return [expected for expected in self.expect_failure if expected not in text]
+        missing = [repr(expected) for expected in self.expect_failure if expected not in text]
+        if self.expect_pattern is not None and re.search(self.expect_pattern, text) is None:
+            missing.append(f"/{self.expect_pattern}/")
+        return missing
 
     def verdict_line(self) -> str:
         """``graphflow test``'s line: PASS, XFAIL (failed as expected) or FAIL."""
-        if not self.expect_failure:
+        if not self.expects_failure:
             return self.summary()
         ran = self.summary().rsplit(" (", 1)[1]
         if self.passed:
             return f"XFAIL {self.path}: failed as expected ({ran}"
         if self.run_passed:
-            return f"FAIL {self.path}: expected to fail ({', '.join(map(repr, self.expect_failure))}) but passed ({ran}"
-        return f"FAIL {self.path}: failed, but not with {', '.join(map(repr, self.missing_failures()))} ({ran}"
+            return f"FAIL {self.path}: expected to fail ({', '.join(self.expectations())}) but passed ({ran}"
+        return f"FAIL {self.path}: failed, but not with {', '.join(self.missing_failures())} ({ran}"
 
     def summary(self) -> str:
         """One line: PASS or FAIL, the file, what held or failed, ticks and simulated time."""
@@ -101,7 +113,7 @@ class ScriptedInputs:
                 sources.append(make(str(document.base_dir / value)))
             else:
                 sources.append(make(None, list(value)))
-        return cls(keys=sources[0], pad=sources[1])
+        return cls(keys=sources[0], pad=sources[1], topics=_scenario_topics(document))
 
     def attach(self, world) -> None:
         """Make the scripted devices services of *world* (they replace a window's or a browser's input)."""
@@ -117,6 +129,30 @@ class ScriptedInputs:
             from graphflow.ros2.bus import attach_transport
 
             attach_transport(world, self.topics)
+
+
+def _scenario_topics(document: GraphDocument):
+    """``scenario.topics``: a topics file (relative to the graph) or entries (``TOPIC@TIME=JSON`` or objects)."""
+    value = document.scenario.get("topics")
+    if value is None:
+        return None
+    from graphflow.ros2.timeline import ScriptedTopics, TopicSpecError, make_entry, parse_topic_spec, scripted_topics
+
+    if isinstance(value, str):
+        return scripted_topics(str(document.base_dir / value))
+    entries = []
+    for index, entry in enumerate(value):
+        where = f"{document.source}: scenario/topics/{index}"
+        if isinstance(entry, str):
+            entries.append(parse_topic_spec(entry))
+            continue
+        unknown = sorted(set(entry) - {"topic", "time", "message", "type"})
+        missing = sorted({"topic", "time", "message"} - set(entry))
+        if unknown or missing:
+            raise TopicSpecError(f"{where}: " + (f"missing {', '.join(missing)}" if missing else
+                                                 f"unknown {', '.join(unknown)} (an entry has topic, time, message, type)"))
+        entries.append(make_entry(entry["topic"], entry["time"], entry["message"], entry.get("type"), where=where))
+    return ScriptedTopics(entries)
 
 
 @dataclass(frozen=True)
@@ -160,7 +196,8 @@ class CheckedRun:
     def __init__(self, document: GraphDocument, *, source: str | None = None, variant: Any = None,
                  inputs: ScriptedInputs = ScriptedInputs(), limits: RunLimits = RunLimits(),
                  evaluate_checks: bool = True, seed: int | None = None, gui: bool = False,
-                 listeners: Iterable[Any] = (), simulation: Any = None, evaluator: CheckEvaluator | None = None):
+                 listeners: Iterable[Any] = (), simulation: Any = None, evaluator: CheckEvaluator | None = None,
+                 update_golden: bool = False):
         self.source = source or document.source
         self.variant = variant
         self.document = variant.document if variant is not None else document
@@ -172,6 +209,7 @@ class CheckedRun:
         self.listeners = list(listeners)
         self.simulation = simulation
         self._attached = simulation is not None
+        self.update_golden = update_golden   # matchesTrace checks rewrite their golden traces from this run
         self._parsed: Any = None   # the preflight's parsed stage (validate.preflight.ParsedStage)
         self.verdict = Verdict(self.source, len(self.evaluator),
                                expect_failure=tuple(self.document.scenario.get("expectFailure", ())))
@@ -202,6 +240,7 @@ class CheckedRun:
         self.inputs.attach(self.simulation.world)
         for listener in (*self.listeners, self.evaluator):
             self.simulation.add_listener(listener)
+        self.evaluator.attach(self.simulation, self.source, update_golden=self.update_golden)
         self._attached = True
         return self.simulation
 
@@ -247,7 +286,7 @@ class CollectedLog:
 
 
 def run_checked(path: str | Path, *, trace: str | Path | None = None, report: str | Path | None = None,
-                listeners: Sequence[Any] = ()) -> Verdict:
+                listeners: Sequence[Any] = (), update_golden: bool = False) -> Verdict:
     """Run the scenario file at *path* headless with its scripted inputs and judge its checks.
 
     Bad input (a graph that does not load, a misspelled prim or check target, a missing key file,
@@ -257,7 +296,7 @@ def run_checked(path: str | Path, *, trace: str | Path | None = None, report: st
     path = str(path)
     document = load_document(path)
     checked = CheckedRun(document, source=path, inputs=ScriptedInputs.of_document(document),
-                         listeners=listeners)
+                         listeners=listeners, update_golden=update_golden)
     checked.preflight()
     if checked.time_limit() is None:   # a scenario must end by itself: nothing hangs
         raise BadInput(f"{path}: no run limit: give settings.duration or a stopsBy check")

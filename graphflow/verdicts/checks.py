@@ -9,8 +9,10 @@ never changes the run, so a checked run computes exactly what an unchecked one d
 """
 from __future__ import annotations
 
+import io
 import math
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any, Iterable, Mapping
 
 END = "end"
@@ -296,15 +298,62 @@ class StopsByCheck(_Check):
         return f"still running when the run ended at t = {result.time:.3f} s", expected
 
 
+class MatchesTraceCheck(_Check):
+    """The run's trace stays within tolerance of a committed golden trace (docs/trace.md); ``--update-golden``
+    rewrites the golden file from this run instead. Needs a run of its own (not a sweep's reused world)."""
+
+    def __init__(self, spec, index, base_dir: Path):
+        from graphflow.observe.trace_tolerance import read_tolerances, tolerances_from
+
+        self.golden = Path(base_dir) / spec["trace"]
+        tolerance = spec.get("tolerance")
+        self.tolerances = (read_tolerances(tolerance, base_dir) if isinstance(tolerance, str)
+                           else tolerances_from(tolerance, f"matchesTrace {spec['trace']}: tolerance"))
+        self.recorded: io.StringIO | None = None
+        self.update = False
+        super().__init__(spec, index)
+
+    def describe(self):
+        return f"trace matches {self.spec['trace']}"
+
+    def attach(self, simulation, source: str, update: bool) -> None:
+        """Record this run's trace in memory from its first tick."""
+        from graphflow.observe.trace import TraceRecorder
+
+        self.recorded, self.update = io.StringIO(), update
+        TraceRecorder(simulation, self.recorded, graph=source)
+
+    def verdict(self, world, result):
+        from graphflow.files import write_text
+        from graphflow.observe.trace import TraceError, parse_trace, read_trace
+        from graphflow.observe.trace_tolerance import tolerant_difference
+
+        expected = f"within tolerance of the golden trace {self.spec['trace']}"
+        if self.recorded is None:
+            return "no trace recorded (this run reused another's world)", expected
+        if self.update:
+            self.golden.parent.mkdir(parents=True, exist_ok=True)
+            write_text(self.golden, self.recorded.getvalue(), force=True)
+            return None
+        try:
+            golden = read_trace(self.golden)
+        except TraceError as error:
+            return f"no golden trace ({error}; graphflow test --update-golden writes it)", expected
+        divergence = tolerant_difference(golden, parse_trace(self.recorded.getvalue()), self.tolerances)
+        return None if divergence is None else (divergence.one_line(), expected)
+
+
 CHECK_TYPES = {"position": PositionCheck, "upright": UprightCheck, "gripperStatus": GripperStatusCheck,
                "held": HeldCheck, "stopsBy": StopsByCheck}
 
 
-def build_checks(specs: Iterable[Mapping[str, Any]]) -> list[_Check]:
+def build_checks(specs: Iterable[Mapping[str, Any]], base_dir: Path = Path(".")) -> list[_Check]:
     specs = list(specs)
     checks: list[_Check] = []
     for index, spec in enumerate(specs):
-        if spec["check"] != "finite":
+        if spec["check"] == "matchesTrace":
+            checks.append(MatchesTraceCheck(spec, index, base_dir))
+        elif spec["check"] != "finite":
             checks.append(CHECK_TYPES[spec["check"]](spec, index))
     named = [prim for check in checks for prim in check.prims()]
     for index, spec in enumerate(specs):
@@ -319,8 +368,15 @@ class CheckEvaluator:
     def __init__(self, document):
         """*document* None: a run whose checks do not apply (an evaluator with no checks)."""
         self.source = document.source if document is not None else "<graph>"
-        self.checks = build_checks(document.checks if document is not None else ())
+        self.checks = build_checks(document.checks if document is not None else (),
+                                   document.base_dir if document is not None else Path("."))
         self.failures: list[CheckFailure] | None = None
+
+    def attach(self, simulation, source: str, *, update_golden: bool = False) -> None:
+        """Give checks that record the run (matchesTrace) the simulation, before its first tick."""
+        for check in self.checks:
+            if isinstance(check, MatchesTraceCheck):
+                check.attach(simulation, source, update_golden)
 
     def __len__(self) -> int:
         return len(self.checks)

@@ -4,13 +4,17 @@ Opt-in, so installing graphflow never changes another project's test run:
 collection starts when the ini option ``graphflow_scenarios = true`` is set
 (pyproject's ``[tool.pytest.ini_options]``) or ``--graphflow-scenarios`` is
 given. Then every ``*.json`` graph with a ``checks`` section that pytest visits
-(for example a folder listed in ``testpaths``) becomes one item. A failure
-shows the failed checks, the kept trace and the command that re-runs it.
+(for example a folder listed in ``testpaths``) becomes one item; a scenario table
+(``graphflow-cases``) one item per case, named by the case; a rate scenario one
+item for all its seeds. A failure shows the failed checks, the kept trace and
+the command that re-runs it.
 Items carry the marker ``graphflow_scenario`` (``-m 'not graphflow_scenario'`` skips them).
 Registered through the ``pytest11`` entry point ``graphflow``.
 """
 from __future__ import annotations
 
+import subprocess
+import sys
 import tempfile
 from pathlib import Path
 
@@ -51,9 +55,15 @@ class ScenarioFile(pytest.File):
         self.problem = problem
 
     def collect(self):
+        from graphflow.verdicts.suite import expand
+
         if self.problem is not None:
             raise self.CollectError(self.problem)
-        yield ScenarioItem.from_parent(self, name=self.path.name)
+        for item in expand(self.path, None):
+            if item.problem is not None:
+                raise self.CollectError(item.problem)
+            name = item.case.name if item.case is not None else self.path.name
+            yield ScenarioItem.from_parent(self, name=name, test_item=item)
 
 
 class ScenarioFailed(Exception):
@@ -61,25 +71,32 @@ class ScenarioFailed(Exception):
 
 
 class ScenarioItem(pytest.Item):
-    def __init__(self, **kwargs):
+    def __init__(self, *, test_item, **kwargs):
         super().__init__(**kwargs)
+        self.test_item = test_item   # graphflow.verdicts.suite.TestItem: a scenario, a table's case or a rate
         self.add_marker("graphflow_scenario")
 
     def runtest(self):
-        from graphflow.errors import BadInput
-        from graphflow.verdicts.checked_run import rerun_command, run_checked
+        from graphflow.verdicts.suite import run_one
 
-        trace = Path(tempfile.mkdtemp(prefix="graphflow-scenario-")) / f"{self.path.stem}.jsonl"
-        try:
-            result = run_checked(self.path, trace=trace)
-        except BadInput as error:   # the graph, its stage, a check target or a key file
-            raise ScenarioFailed(*error.lines()) from None
-        if result.passed:
-            trace.unlink()
-            trace.parent.rmdir()
+        if self.test_item.rate is not None:
+            self.run_rate()
             return
-        lines = [result.verdict_line(), *result.failures, f"trace: {trace}", f"re-run: {rerun_command(str(self.path))}"]
-        raise ScenarioFailed(*lines)
+        folder = Path(tempfile.mkdtemp(prefix="graphflow-scenario-"))
+        outcome = run_one(self.test_item, str(folder / f"{self.path.stem}.jsonl"), quiet=False)
+        if outcome.passed or outcome.error is not None:
+            folder.rmdir()
+        if outcome.error is not None:   # the graph, its stage, a check target or a key file
+            raise ScenarioFailed(outcome.error)
+        if not outcome.passed:
+            raise ScenarioFailed(*(line.strip() for line in outcome.lines()))
+
+    def run_rate(self):
+        """A rate runs its episodes on sweep workers: through ``graphflow test`` in a process of its own."""
+        result = subprocess.run([sys.executable, "-m", "graphflow", "test", str(self.path)],
+                                capture_output=True, text=True)
+        if result.returncode != 0:
+            raise ScenarioFailed(*(line.strip() for line in (result.stdout + result.stderr).splitlines()[:-1] or ["failed"]))
 
     def repr_failure(self, excinfo, style=None):
         if isinstance(excinfo.value, ScenarioFailed):
@@ -87,4 +104,4 @@ class ScenarioItem(pytest.Item):
         return super().repr_failure(excinfo, style)
 
     def reportinfo(self):
-        return self.path, None, f"scenario {self.path.name}"
+        return self.path, None, f"scenario {self.test_item.name}"

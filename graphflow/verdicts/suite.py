@@ -1,9 +1,11 @@
-"""``graphflow test PATH...``: every scenario (graph with checks) under the paths, in parallel, with a verdict each.
+"""``graphflow test PATH...``: every test item under the paths, in parallel, with a verdict each.
 
-One line per scenario (PASS / FAIL with its failure lines), then exactly
-``N passed, M failed``. A failing scenario keeps its trace and prints the
-command that re-runs it. ``--junit FILE`` writes JUnit XML (one testsuite,
-one testcase per scenario) through a temporary file and a rename.
+An item is a scenario (graph with checks), one case of a scenario table (``graphflow.verdicts.cases``)
+or a rate scenario run over seeds (``graphflow.verdicts.rates``). One line per item (PASS / XFAIL /
+FAIL with its failure lines), then exactly ``N passed, M failed``. A failing run keeps its trace and
+timeline picture and prints the command that re-runs it. ``--junit FILE`` writes JUnit XML (one
+testsuite, one testcase per item, a rate's counts as properties, kept files in ``<system-out>``)
+through a temporary file and a rename.
 """
 from __future__ import annotations
 
@@ -16,10 +18,13 @@ import xml.etree.ElementTree as ET
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from graphflow.errors import BadInput
 from graphflow.files import FileProblem, read_json, refuse_existing, write_bytes
-from graphflow.verdicts.checked_run import Verdict, rerun_command, run_checked
+from graphflow.verdicts.cases import Case, is_table, load_table, run_case
+from graphflow.verdicts.checked_run import rerun_command, run_checked
+from graphflow.verdicts.rates import RatePlan, rate_plan
 
 
 class NoScenarios(BadInput):
@@ -36,6 +41,12 @@ def scenario_problem(path: Path) -> str | None | bool:
         data = read_json(path)
     except FileProblem as error:
         return str(error)
+    if is_table(data):
+        try:
+            load_table(path)
+        except BadInput as error:
+            return error.lines()[0]
+        return None
     looks_like_graph = isinstance(data, dict) and (data.get("format") == "graphflow" or "nodes" in data)
     if not looks_like_graph:
         return False
@@ -44,6 +55,38 @@ def scenario_problem(path: Path) -> str | None | bool:
     except BadInput as error:
         return error.lines()[0]
     return None if data.get("checks") else False
+
+
+@dataclass(frozen=True)
+class TestItem:
+    """One verdict of ``graphflow test``: a scenario file, a case of a table, or a rate over seeds."""
+
+    path: Path
+    problem: str | None = None
+    case: Case | None = None
+    rate: RatePlan | None = None
+
+    @property
+    def name(self) -> str:
+        return self.case.item_name if self.case is not None else str(self.path)
+
+
+def expand(path: Path, problem: str | None, seeds: int | None = None, gate: float | None = None) -> list[TestItem]:
+    """The items of one collected file: a table's cases, a rate (declared ``seeds`` or ``--seeds``), or itself."""
+    if problem is not None:
+        return [TestItem(path, problem)]
+    try:
+        data = read_json(path)
+        if is_table(data):
+            return [TestItem(path, case=case) for case in load_table(path)]
+    except BadInput as error:
+        return [TestItem(path, error.lines()[0])]
+    plan = rate_plan(str(path), data, seeds, gate) if isinstance(data, dict) else None
+    return [TestItem(path, rate=plan)]
+
+
+def collect_items(paths, seeds: int | None = None, gate: float | None = None) -> list[TestItem]:
+    return [item for path, problem in collect(paths) for item in expand(path, problem, seeds, gate)]
 
 
 def collect(paths) -> list[tuple[Path, str | None]]:
@@ -73,11 +116,16 @@ class Outcome:
     """A scenario's result as sent back from a worker process (plain data), plus wall time."""
 
     path: str
-    result: Verdict | None
+    result: Any   # a Verdict, or a RateVerdict; None for bad input
     error: str | None = None        # bad input: the graph, stage or scripted inputs did not load
     wall: float = 0.0
     trace: str | None = None
     output: list[str] = field(default_factory=list)
+    rerun: str = ""
+    artifacts: list[str] = field(default_factory=list)   # lines on what a failing run left: trace, timeline
+    files: list[str] = field(default_factory=list)       # the files those lines name
+    case: str | None = None                               # the table case's name
+    properties: dict = field(default_factory=dict)       # JUnit properties (a rate's counts and interval)
     report: str | None = None       # the scenario's HTML run report (graphflow test --reports)
 
     @property
@@ -91,48 +139,90 @@ class Outcome:
         lines = [self.result.verdict_line()]
         lines += [f"    {failure}" for failure in self.result.failures]
         if not self.passed:
-            if self.trace:
-                lines.append(f"    trace: {self.trace}")
+            lines += [f"    {artifact}" for artifact in self.artifacts]
             if self.report:
                 lines.append(f"    report: {self.report}")
-            lines.append(f"    re-run: {rerun_command(self.path)}")
+            if self.rerun:
+                lines.append(f"    re-run: {self.rerun}")
         return lines
 
 
-def run_one(path: str, trace: str, report: str | None = None) -> Outcome:
-    """Worker: run one scenario with a trace (deleted when the scenario passes) and, if asked, a report (kept)."""
-    logging.getLogger("graphflow").setLevel(logging.ERROR)   # the graph's lines go to the report, not stderr
+def run_one(item: TestItem, trace: str, update_golden: bool = False, quiet: bool = True,
+            report: str | None = None) -> Outcome:
+    """Worker: run one scenario or case with a trace (deleted when it passes, else drawn) and, if asked, a
+    scenario's report (kept)."""
+    if quiet:
+        logging.getLogger("graphflow").setLevel(logging.ERROR)   # the graph's lines go to the report, not stderr
     started = time.perf_counter()
+    name = item.name
     try:
-        result = run_checked(path, trace=trace, report=report)
+        if item.case is not None:
+            result, rerun, report = run_case(item.case, trace=trace), item.case.rerun_command(), None
+        else:
+            result = run_checked(item.path, trace=trace, report=report, update_golden=update_golden)
+            rerun = rerun_command(name)
     except BadInput as error:
-        return Outcome(path, None, error=error.lines()[0], wall=time.perf_counter() - started)
-    outcome = Outcome(path, result, wall=time.perf_counter() - started, trace=trace, output=result.output,
-                      report=report)
+        return Outcome(name, None, error=error.lines()[0], wall=time.perf_counter() - started)
+    outcome = Outcome(name, result, wall=time.perf_counter() - started, trace=trace, output=result.output,
+                      rerun=rerun, case=item.case.name if item.case is not None else None, report=report)
     if result.passed:
         os.unlink(trace)
         outcome.trace = None
+    else:
+        outcome.artifacts, outcome.files = failure_artifacts(trace)
     return outcome
 
 
-def run_all(scenarios: list[tuple[Path, str | None]], jobs: int, trace_dir: Path, report=print,
-            report_dir: Path | None = None) -> list[Outcome]:
-    """Run every scenario on *jobs* processes; report each one's lines in the given order as it is known.
+def failure_artifacts(trace: str) -> tuple[list[str], list[str]]:
+    """The kept trace and its timeline picture (``graphflow plot``): lines for the report, and the files."""
+    lines, files = [f"trace: {trace}"], [trace]
+    picture = str(Path(trace).with_suffix(".png"))
+    try:
+        from graphflow.observe.timeline import write_timeline
+        from graphflow.observe.trace import read_trace
 
-    A file whose problem is already known (it does not parse or load) is an ERROR outcome without a run.
+        write_timeline(read_trace(trace), picture)
+    except ImportError as error:
+        lines.append(f"timeline: not drawn ({error.name} is not installed: pip install 'graphflow[viz]')")
+    else:
+        lines.append(f"timeline: {picture}")
+        files.append(picture)
+    return lines, files
+
+
+def run_rate_item(item: TestItem, jobs: int | None, ray: bool, rate_runner) -> Outcome:
+    """A rate item, in this process: *rate_runner* (``graphflow.sweep.scenario_rates.run_rate``, given by the
+    command line, which sits above both packages) runs its episodes on the sweep launcher's own workers."""
+    started = time.perf_counter()
+    try:
+        result = rate_runner(item.rate, jobs=jobs, ray=ray)
+    except BadInput as error:
+        return Outcome(item.name, None, error=error.lines()[0], wall=time.perf_counter() - started)
+    return Outcome(item.name, result, wall=time.perf_counter() - started, properties=result.properties(),
+                   output=[result.rate_line(), *result.failures[0 if result.gate_passed else 1:]])
+
+
+def run_all(items: list[TestItem], jobs: int, trace_dir: Path, report=print, *, update_golden: bool = False,
+            ray: bool = False, rate_runner=None, report_dir: Path | None = None) -> list[Outcome]:
+    """Run every item, single runs on *jobs* processes and rates on the sweep launcher in turn; report each
+    item's lines in the given order as it is known. A file whose problem is already known (it does not
+    parse or load) is an ERROR outcome without a run.
     """
-    traces = [str(trace_dir / f"{index:03d}-{path.stem}.jsonl") for index, (path, _) in enumerate(scenarios)]
-    reports = [str(report_dir / f"{index:03d}-{path.stem}.html") if report_dir is not None else None
-               for index, (path, _) in enumerate(scenarios)]
-    runnable = [index for index, (_, problem) in enumerate(scenarios) if problem is None]
-    outcomes: list[Outcome | None] = [None if problem is None else Outcome(str(path), None, error=problem)
-                                      for path, problem in scenarios]
+    traces = [str(trace_dir / f"{index:03d}-{item.path.stem}.jsonl") for index, item in enumerate(items)]
+    reports = [str(report_dir / f"{index:03d}-{item.path.stem}.html") if report_dir is not None else None
+               for index, item in enumerate(items)]
+    outcomes: list[Outcome | None] = [None if item.problem is None else Outcome(item.name, None, error=item.problem)
+                                      for item in items]
+    runnable = [index for index, item in enumerate(items) if item.problem is None and item.rate is None]
+    futures: dict = {index: _Later(run_rate_item, item, jobs, ray, rate_runner) for index, item in enumerate(items)
+                     if item.problem is None and item.rate is not None}
     if jobs <= 1 or len(runnable) <= 1:
-        futures = {index: _Later(run_one, str(scenarios[index][0]), traces[index], reports[index]) for index in runnable}
+        futures.update({index: _Later(run_one, items[index], traces[index], update_golden, True, reports[index])
+                        for index in runnable})
         return _report_in_order(outcomes, futures, report)
     with ProcessPoolExecutor(max_workers=min(jobs, len(runnable))) as pool:
-        futures = {index: pool.submit(run_one, str(scenarios[index][0]), traces[index], reports[index])
-                   for index in runnable}
+        futures.update({index: pool.submit(run_one, items[index], traces[index], update_golden, True, reports[index])
+                        for index in runnable})
         return _report_in_order(outcomes, futures, report)
 
 
@@ -165,19 +255,26 @@ def junit_xml(outcomes: list[Outcome]) -> bytes:
     suite = ET.SubElement(suites, "testsuite", name="graphflow", tests=str(len(outcomes)), failures=str(failures),
                           errors=str(errors), skipped="0", time=f"{total_time:.3f}")
     for outcome in outcomes:
-        path = Path(outcome.path)
-        case = ET.SubElement(suite, "testcase", name=path.name, classname=path.parent.as_posix().replace("/", ".").strip(".") or "graphs",
-                             file=outcome.path, time=f"{outcome.wall:.3f}")
-        if outcome.report:   # the run report beside the verdict (CI servers show testcase properties)
+        path = Path(outcome.path.split("::")[0])
+        classname = path.parent.as_posix().replace("/", ".").strip(".") or "graphs"
+        if outcome.case is not None:   # a table's case: the table is the class, the case the test
+            classname = f"{classname}.{path.stem}"
+        case = ET.SubElement(suite, "testcase", name=outcome.case or path.name, classname=classname,
+                             file=str(path), time=f"{outcome.wall:.3f}")
+        # a rate's counts and interval, the run report beside the verdict (CI servers show testcase properties)
+        shown = {**outcome.properties, **({"report": outcome.report} if outcome.report else {})}
+        if shown:
             properties = ET.SubElement(case, "properties")
-            ET.SubElement(properties, "property", name="report", value=outcome.report)
+            for key, value in shown.items():
+                ET.SubElement(properties, "property", name=key, value=value)
         if outcome.error is not None:
             ET.SubElement(case, "error", message=outcome.error, type="BadInput").text = outcome.error
         elif not outcome.passed:
             element = ET.SubElement(case, "failure", message=outcome.lines()[0], type="CheckFailed")
             element.text = "\n".join(outcome.lines()[1:])
-        if outcome.output:
-            ET.SubElement(case, "system-out").text = "\n".join(outcome.output)
+        if outcome.output or outcome.files:   # [[ATTACHMENT|path]]: how Jenkins and GitLab pick up a test's files
+            ET.SubElement(case, "system-out").text = "\n".join(
+                [*outcome.output, *outcome.artifacts, *(f"[[ATTACHMENT|{Path(file).resolve()}]]" for file in outcome.files)])
     ET.indent(suites)
     return ET.tostring(suites, encoding="utf-8", xml_declaration=True) + b"\n"
 
@@ -194,9 +291,9 @@ def _report_folder(folder: str | None, force: bool) -> Path | None:
     return path
 
 
-def command_test(args, report=print) -> int:
+def command_test(args, report=print, rate_runner=None) -> int:
     """Exit 0 when every scenario passes, 1 when one fails, 2 when a scenario or path is bad input."""
-    scenarios = collect(args.paths)
+    items = collect_items(args.paths, args.seeds, args.min_pass_rate)
     junit = Path(args.junit) if args.junit else None
     if junit is not None:
         refuse_existing(junit, args.force)
@@ -206,7 +303,8 @@ def command_test(args, report=print) -> int:
     else:
         trace_dir = Path(tempfile.mkdtemp(prefix="graphflow-test-"))
     report_dir = _report_folder(getattr(args, "reports", None), args.force)
-    outcomes = run_all(scenarios, args.jobs or os.cpu_count() or 1, trace_dir, report, report_dir)
+    outcomes = run_all(items, args.jobs or os.cpu_count() or 1, trace_dir, report, update_golden=args.update_golden,
+                       ray=args.ray, rate_runner=rate_runner, report_dir=report_dir)
     if not args.traces and not any(o.trace for o in outcomes):
         shutil.rmtree(trace_dir, ignore_errors=True)
     if junit is not None:

@@ -93,7 +93,7 @@ def test_strict_reader_accepts_every_shipped_graph():
 def test_duplicate_key_error_names_the_key_and_file():
     with pytest.raises(FileProblem) as caught:
         loads_strict('{"a": 1, "b": {"x": 1, "x": 2}}', "twice.json")
-    assert str(caught.value) == 'twice.json: invalid JSON: duplicate key "x" in one object'
+    assert str(caught.value) == 'twice.json: invalid JSON at line 1 column 24 (b/x): duplicate key "x" in one object'
 
 
 # ---------------------------------------------------------------- 2. values

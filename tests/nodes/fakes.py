@@ -10,6 +10,7 @@ class FakeArticulationWorld(ClockWorld):
         super().__init__(time_step)
         self.joints = joints
         self.positions = {path: [0.0] * len(names) for path, names in joints.items()}
+        self.efforts = {path: [0.0] * len(names) for path, names in joints.items()}
         self.calls: list[tuple] = []
 
     def joint_names(self, articulation_path):
@@ -20,12 +21,18 @@ class FakeArticulationWorld(ClockWorld):
     def joint_positions(self, articulation_path):
         return tuple(self.positions[articulation_path])
 
+    def joint_efforts(self, articulation_path):
+        """Ideal actuators: the efforts applied are the ones last commanded."""
+        return tuple(self.efforts[articulation_path])
+
     def set_joint_targets(self, articulation_path, indices, *, positions=None, velocities=None, efforts=None):
         self.joint_names(articulation_path)
         self.calls.append((articulation_path, tuple(indices), positions and tuple(positions),
                            velocities and tuple(velocities), efforts and tuple(efforts)))
         for index, value in zip(indices, positions or ()):
             self.positions[articulation_path][index] = value
+        for index, value in zip(indices, efforts or ()):
+            self.efforts[articulation_path][index] = value
 
 
 UR10_JOINTS = ("shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint", "wrist_1_joint", "wrist_2_joint",

@@ -64,3 +64,65 @@ def test_on_variable_change_fires_the_tick_after_a_write_changes_the_value():
         counts.append(harness.output("changes", "count"))
     # mode after each tick: 1, 2, 0, 1, 2, 0, 1 (count % 3); a change shows on the next tick
     assert counts == [0, 1, 2, 3, 4, 5, 6]
+
+
+def test_a_custom_event_sent_on_one_tick_fires_its_listeners_on_the_next_with_its_path():
+    import json
+
+    harness = GraphHarness(_graph(
+        {"name": "tick", "type": "omni.graph.action.OnTick"},
+        {"name": "send", "type": "omni.graph.action.SendCustomEvent",
+         "inputs": {"eventName": "go", "path": "/World/Cube"}},
+        {"name": "push", "type": "omni.graph.action.SendMessageBusEvent",
+         "inputs": {"eventName": "moved", "messageFields": json.dumps({"arg1": 42})}},
+        {"name": "listen", "type": "omni.graph.action.OnCustomEvent", "inputs": {"eventName": "go"}},
+        {"name": "other", "type": "omni.graph.action.OnCustomEvent", "inputs": {"eventName": "stop"}},
+        {"name": "bus", "type": "omni.graph.action.OnMessageBusEvent", "inputs": {"eventName": "moved"}},
+        {"name": "heard", "type": "omni.graph.action.Counter"},
+        {"name": "unheard", "type": "omni.graph.action.Counter"},
+        {"name": "bus_heard", "type": "omni.graph.action.Counter"},
+        connections=[("tick.outputs:tick", "send.inputs:execIn"), ("send.outputs:execOut", "push.inputs:execIn"),
+                     ("listen.outputs:execOut", "heard.inputs:execIn"),
+                     ("other.outputs:execOut", "unheard.inputs:execIn"),
+                     ("bus.outputs:execOut", "bus_heard.inputs:execIn")]))
+    harness.run(1)
+    assert (harness.output("heard", "count"), harness.output("bus_heard", "count")) == (0, 0)   # delivered later
+    harness.run(2)
+    assert (harness.output("heard", "count"), harness.output("bus_heard", "count")) == (2, 2)
+    assert harness.output("unheard", "count") == 0
+    assert harness.output("listen", "path") == "/World/Cube"
+    assert json.loads(harness.output("bus", "payload")) == {"arg1": 42}
+
+
+def test_exit_application_ends_the_run_after_its_tick():
+    harness = GraphHarness(_graph(
+        {"name": "tick", "type": "omni.graph.action.OnTick"},
+        {"name": "ticks", "type": "omni.graph.action.Counter"},
+        {"name": "third", "type": "omni.graph.nodes.Compare", "inputs": {"b": 3, "operation": "=="}},
+        {"name": "branch", "type": "omni.graph.action.Branch"},
+        {"name": "exit", "type": "omni.graph.action.ExitApplication"},
+        connections=[("tick.outputs:tick", "ticks.inputs:execIn"), ("ticks.outputs:execOut", "branch.inputs:execIn"),
+                     ("ticks.outputs:count", "third.inputs:a"), ("third.outputs:result", "branch.inputs:condition"),
+                     ("branch.outputs:execTrue", "exit.inputs:execIn")]))
+    harness.run(10)
+    assert harness.output("ticks", "count") == 3
+
+
+def test_on_object_change_fires_the_tick_after_a_property_changes():
+    from graphflow.testing.fake_world import FakeWorld
+
+    world = FakeWorld()
+    world.add_box("/World/Cube", (0.0, 0.0, 0.5), (0.1, 0.1, 0.1))
+    world.attributes[("/World/Cube", "physics:mass")] = 1.0
+    harness = GraphHarness(_graph(
+        {"name": "watch", "type": "omni.graph.action.OnObjectChange",
+         "inputs": {"path": "/World/Cube.physics:mass"}},
+        {"name": "changes", "type": "omni.graph.action.Counter"},
+        connections=[("watch.outputs:changed", "changes.inputs:execIn")]), world=world)
+    counts = []
+    for mass in (1.0, 1.0, 2.0, 2.0, 3.0):
+        world.attributes[("/World/Cube", "physics:mass")] = mass
+        harness.run(1)
+        counts.append(harness.output("changes", "count"))
+    assert counts == [0, 0, 1, 1, 2]
+    assert harness.output("watch", "propertyName") == "physics:mass"

@@ -80,3 +80,47 @@ def test_construct_then_index_in_a_graph():
     })
     g.run(ticks=1)
     assert g.logs == ["b"]
+
+
+def test_array_remove_index_fill_and_resize():
+    from graphflow.testing import NodeHarness
+
+    def out(type_name, **inputs):
+        return NodeHarness(f"omni.graph.nodes.{type_name}", inputs).compute().outputs["array"]
+
+    assert out("ArrayRemoveIndex", array=[1, 2, 3], index=-1) == (1, 2)
+    assert out("ArrayRemoveIndex", array=[1, 2, 3], index=0) == (2, 3)
+    assert out("ArrayFill", array=[1.0, 2.0, 3.0], fillValue=7.5) == (7.5, 7.5, 7.5)
+    assert out("ArrayResize", array=[1, 2, 3], newSize=2) == (1, 2)
+    assert out("ArrayResize", array=[[1.0, 2.0]], newSize=3) == ((1.0, 2.0), (0.0, 0.0), (0.0, 0.0))
+    assert out("ArrayResize", array=[1, 2], newSize=-4) == ()
+
+
+def test_array_set_index_and_to_target():
+    from graphflow.testing import NodeHarness
+
+    def out(type_name, output, **inputs):
+        return NodeHarness(f"omni.graph.nodes.{type_name}", inputs).compute().outputs[output]
+
+    assert out("ArraySetIndex", "array", array=[1, 2, 3], index=-1, value=9) == (1, 2, 9)
+    assert out("ArraySetIndex", "array", array=[1.0], index=2, value=5.0, resizeToFit=True) == (1.0, 0.0, 5.0)
+    assert out("ToTarget", "converted", value="/World/Cube") == ("/World/Cube",)
+    assert out("ToTarget", "converted", value=["/World/a", "/World/b"]) == ("/World/a", "/World/b")
+    assert out("ToTarget", "converted", value="") == ()
+
+
+def test_array_reverse_rotate_remove_and_insert_values():
+    from graphflow.testing import NodeHarness
+
+    def out(type_name, output="array", **inputs):
+        return NodeHarness(f"omni.graph.nodes.{type_name}", inputs).compute().outputs[output]
+
+    assert out("ArrayReverse", array=[1, 2, 3]) == (3, 2, 1)
+    assert out("ArrayRotate", array=[1, 2, 3, 4], steps=1) == (4, 1, 2, 3)
+    assert out("ArrayRotate", array=[1, 2, 3, 4], steps=-1) == (2, 3, 4, 1)
+    assert out("ArrayRemoveValue", array=[1, 2, 1, 3], value=1) == (2, 1, 3)
+    assert out("ArrayRemoveValue", array=[1, 2, 1, 3], value=1, removeAll=True) == (2, 3)
+    assert out("ArrayRemoveValue", "found", array=[1, 2], value=5) is False
+    assert out("ArrayInsertValue", array=[1, 2, 3], index=1, value=9) == (1, 9, 2, 3)
+    assert out("ArrayInsertValue", array=[1, 2], index=-1, value=0) == (0, 1, 2)
+    assert out("ArrayInsertValue", array=[1, 2], index=7, value=3) == (1, 2, 3)

@@ -54,3 +54,12 @@ def test_constant_float_feeds_multiply_like_the_isaac_gantry_graph():
     })
     g.run(ticks=1)
     assert g.logs == ["-0.20"]
+
+
+def test_constants_and_targets_size_pass_their_values_on():
+    assert __import__("graphflow.testing").testing.NodeHarness("omni.graph.nodes.GetTargetsSize", {"targets": ["/a", "/b", "/c"]}).compute().outputs["size"] == 3
+    for type_id, value in (("ConstantHalf", 0.5), ("ConstantInt2", [1, 2]), ("ConstantPoint3f", [1.0, 2.0, 3.0]),
+                           ("ConstantDouble4", [1.0, 2.0, 3.0, 4.0]), ("ConstantFloat4", [1.0, 2.0, 3.0, 4.0]),
+                           ("ConstantQuatf", [0.0, 0.0, 0.0, 1.0]), ("ConstantVector3f", [0.0, 1.0, 0.0])):
+        out = __import__("graphflow.testing").testing.NodeHarness(f"omni.graph.nodes.{type_id}", {"value": value}).compute().outputs["value"]
+        assert out == (tuple(value) if isinstance(value, list) else value)

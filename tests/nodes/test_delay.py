@@ -81,3 +81,27 @@ def test_delay_restarts_after_finishing_and_graph_reset_clears_latent_state():
     assert g.instance.database("delay").is_latent is False
     g.run(ticks=3)
     assert g.output("cnt", "count") == 1
+
+
+def test_timer_runs_from_start_to_end_value_over_its_duration_in_simulated_time():
+    """0.5 s at 60 Hz: played on tick 1, the value moves (end - start) / 30 a tick from tick 2 and 'finished'
+    fires on tick 31, the 30th step, with the end value."""
+    from graphflow.testing import GraphHarness
+
+    harness = GraphHarness({"nodes": [
+        {"name": "start", "type": "omni.graph.action.OnLoaded"},
+        {"name": "timer", "type": "omni.graph.nodes.Timer", "inputs": {"duration": 0.5, "startValue": 2.0,
+                                                                        "endValue": 5.0}},
+        {"name": "updates", "type": "omni.graph.action.Counter"},
+        {"name": "done", "type": "omni.graph.action.Counter"}],
+        "connections": [{"src": "start.outputs:execOut", "dst": "timer.inputs:play"},
+                        {"src": "timer.outputs:updated", "dst": "updates.inputs:execIn"},
+                        {"src": "timer.outputs:finished", "dst": "done.inputs:execIn"}]})
+    values = []
+    for _ in range(32):
+        harness.run(1)
+        values.append(harness.output("timer", "value"))
+    assert values[0] == 2.0 and values[1] == pytest.approx(2.1) and values[15] == pytest.approx(3.5)
+    assert values[30] == pytest.approx(5.0) and values[31] == pytest.approx(5.0)
+    assert harness.output("done", "count") == 1
+    assert harness.output("updates", "count") == 31      # the start, then one a tick for 30 ticks

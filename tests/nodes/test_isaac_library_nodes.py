@@ -156,10 +156,12 @@ def test_articulation_state_reads_the_chosen_joints():
     world = FakeArticulationWorld({"/World/arm": ("shoulder", "elbow", "wrist")})
     world.positions["/World/arm"] = [0.1, 0.2, 0.3]
     world.joint_velocities = lambda path: (1.0, 2.0, 3.0)
+    world.set_joint_targets("/World/arm", [0, 2], efforts=[4.0, 6.0])
     by_name = NodeHarness("isaacsim.core.nodes.IsaacArticulationState",
                           {"robotPath": "/World/arm", "jointNames": ["wrist", "shoulder"]}, world=world).compute("execIn")
     assert by_name.outputs["jointNames"] == ("wrist", "shoulder")
     assert by_name.outputs["jointPositions"] == (0.3, 0.1) and by_name.outputs["jointVelocities"] == (3.0, 1.0)
+    assert by_name.outputs["measuredJointEfforts"] == (6.0, 4.0)
     by_index = NodeHarness("isaacsim.core.nodes.IsaacArticulationState",
                            {"targetPrim": ["/World/arm"], "jointIndices": [1]}, world=world).compute("execIn")
     assert by_index.outputs["jointNames"] == ("elbow",)

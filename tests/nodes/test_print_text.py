@@ -64,3 +64,16 @@ def test_counter_format_print_logs_in_tick_order():
     })
     g.run(ticks=3)
     assert g.logs == ["count = 1", "count = 2", "count = 3"]
+
+
+def test_string_nodes_append_join_and_measure():
+    from graphflow.testing import NodeHarness
+
+    def out(type_id, output, **inputs):
+        return NodeHarness(f"omni.graph.nodes.{type_id}", inputs).compute().outputs[output]
+
+    assert out("BuildString", "value", a="robot_", b="arm") == "robot_arm"
+    assert out("BuildString", "value", a=["a", "b"], b="_x") == ("a_x", "b_x")
+    assert out("AppendString", "value", value="/World", suffix="/Cube") == "/World/Cube"
+    assert out("JoinString", "string", delimiter=", ", elements=["x", "y", "z"]) == "x, y, z"
+    assert out("GetStringLength", "length", string="graphflow") == 9

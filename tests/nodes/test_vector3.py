@@ -34,3 +34,15 @@ def test_make_scale_break_round_trip():
     g.run(ticks=1)
     assert g.logs == ["z=6.0"]
     assert g.output("scale", "product") == (2.0, 4.0, 6.0)
+
+
+def test_two_vectors_and_prim_paths():
+    from graphflow.testing import NodeHarness
+
+    assert NodeHarness("omni.graph.nodes.MakeVector2", {"x": 1.5, "y": -2}).compute().outputs["tuple"] == (1.5, -2.0)
+    split = NodeHarness("omni.graph.nodes.BreakVector2", {"tuple": [3.0, 4.0]}).compute().outputs
+    assert (split["x"], split["y"]) == (3.0, 4.0)
+    parents = NodeHarness("omni.graph.nodes.GetParentPrims", {"prims": ["/World/Cube", "/World"]}).compute()
+    assert parents.outputs["parentPrims"] == ("/World", "/")
+    assert NodeHarness("omni.graph.nodes.GetPrimPath", {"prim": ["/World/Cube"]}).compute().outputs["primPath"] == (
+        "/World/Cube")

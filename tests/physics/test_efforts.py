@@ -64,3 +64,15 @@ def test_effort_command_on_the_ur10_wrist_through_the_articulation_controller():
             assert abs(world.joint_velocities("/ur10")[5]) < 0.01
         wrist = world.joint_positions("/ur10")[5] - start[5]
         assert 0.0 < wrist < 2.0 * 5.0 / (1e4 * 180 / math.pi)
+
+
+@pytest.mark.parametrize("stiffness", [1e3, 1e6])
+@pytest.mark.parametrize("extra", [0.0, 50.0])
+def test_joint_efforts_at_rest_hold_the_load_up(stiffness, extra):
+    """Statics: at rest the slide's actuation carries the 2 kg load's weight, m g = 19.6 N up, whether the
+    drive alone holds it or an added 50 N effort shares the work (soft drive: torque law; stiff: motor)."""
+    with create_world(slide_stage(stiffness, 2.0 * math.sqrt(stiffness * 2.0), start=-LOAD_FORCE / stiffness)) as world:
+        world.set_joint_targets("/World/Robot", [0], efforts=[extra])
+        settle(world)
+        assert world.joint_efforts("/World/Robot") == pytest.approx((LOAD_FORCE,), rel=0.01)
+        assert world.joint_dof_types("/World/Robot") == (1,)

@@ -161,3 +161,18 @@ def test_bad_topics_file_is_one_line_and_exit_2(tmp_path, capsys):
     assert main(["run", str(graph), "--topics", str(topics)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "topics[0]: message: sensor_msgs/msg/JointState has no field names" in err[0]
+
+
+def test_an_ackermann_drive_published_is_the_drive_its_subscriber_reads():
+    publisher = NodeHarness(BRIDGE + "ROS2PublishAckermannDrive",
+                            {"timeStamp": 2.5, "frameId": "base_link", "steeringAngle": 0.3, "speed": 1.5,
+                             "acceleration": 0.5})
+    publisher.compute("execIn")
+    (topic, type_name, message), = _published(publisher.world)
+    assert (topic, type_name) == ("/ackermann_cmd", "ackermann_msgs/msg/AckermannDriveStamped")
+    assert message["header"] == {"stamp": {"sec": 2, "nanosec": 500_000_000}, "frame_id": "base_link"}
+    reader = NodeHarness(BRIDGE + "ROS2SubscribeAckermannDrive", world=publisher.world)
+    assert reader.compute("execIn").fired == {"execOut"}
+    out = reader.outputs
+    assert (out.frameId, out.timeStamp, out.speed, out.acceleration, out.jerk) == ("base_link", 2.5, 1.5, 0.5, 0.0)
+    assert out.steeringAngle == pytest.approx(0.3)      # float32 in the message

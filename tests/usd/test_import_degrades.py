@@ -75,7 +75,11 @@ def test_a_target_in_a_layer_that_cannot_be_opened_is_kept_and_named_once(tmp_pa
 def test_validate_reports_the_missing_layer_unless_allowed(tmp_path, capsys):
     _import(tmp_path, MISSING_ROBOT, capsys)
     assert main(["validate", str(tmp_path / "graph.json")]) == 2
-    assert capsys.readouterr().err.splitlines() == [f"{tmp_path / 'graph.json'}: {LINE}"]
+    assert capsys.readouterr().err.splitlines() == [   # the stage's one line for the layer (graphflow.usd.opening)
+        f"{tmp_path / 'graph.json'}: settings/stage: {tmp_path / 'scene.usda'}: cannot open "
+        "https://example.invalid/robots/arm.usd, the payload of /Robot in layer scene.usda: prims lost: everything "
+        "that payload puts below /Robot (map its URL prefix to a local folder in graphflow.toml [assets.remap] or "
+        "GRAPHFLOW_ASSET_REMAP)"]
     assert main(["validate", "--allow-missing-assets", str(tmp_path / "graph.json")]) == 0
     assert f"warning: {tmp_path / 'graph.json'}: {LINE}" in capsys.readouterr().err.splitlines()
 

@@ -81,9 +81,11 @@ def test_a_sweep_file_is_read_as_strictly_as_a_graph(tmp_path, capsys):
     sweep.write_text('{"format": "graphflow-sweep", "formatVersion": [1, 0], "graph": "g.json", "seconds": NaN}')
     code, _out, err = run_cli(capsys, "sweep", sweep)
     assert code == 2
-    assert err == f"graphflow: error: {sweep}: invalid JSON: NaN is not a JSON value (RFC 8259 has no NaN or Infinity)\n"
+    assert err == (f"graphflow: error: {sweep}: invalid JSON at line 1 column 86 (seconds): "
+                   "NaN is not a JSON value (RFC 8259 has no NaN or Infinity)\n")
     sweep.write_text('{"seeds": 2, "seeds": 100}')
-    assert run_cli(capsys, "sweep", sweep)[::2] == (2, f"graphflow: error: {sweep}: invalid JSON: duplicate key \"seeds\" in one object\n")
+    assert run_cli(capsys, "sweep", sweep)[::2] == (2, f"graphflow: error: {sweep}: invalid JSON at line 1 column 14 (seeds): "
+                                                            "duplicate key \"seeds\" in one object\n")
 
 
 def test_junit_and_generated_docs_follow_the_umask(tmp_path, capsys, monkeypatch):

@@ -104,11 +104,12 @@ def test_graphflow_test_lines_last_line_junit_and_kept_trace(tmp_path):
     assert lines[1].startswith(f"ERROR {folder / 'broken.json'}: ")
     assert lines[2] == f"XFAIL {expected_failure}: failed as expected (4 ticks, 2.000 s simulated)"
     failing_at = lines.index(f"FAIL {failing}: 1 failure (4 ticks, 2.000 s simulated)")
-    trace_line, rerun_line = lines[failing_at + 2], lines[failing_at + 3]
+    trace_line, timeline_line, rerun_line = lines[failing_at + 2: failing_at + 5]
     assert trace_line.startswith("    trace: ") and Path(trace_line.split(": ", 1)[1]).is_file()
+    assert timeline_line == f"    timeline: {tmp_path / 'traces' / '003-b_failing.png'}"
     assert rerun_line == f"    re-run: graphflow run {failing}"
     assert lines[-1] == "2 passed, 2 failed"
-    assert sorted(p.name for p in (tmp_path / "traces").iterdir()) == ["003-b_failing.jsonl"]   # passing traces go
+    assert sorted(p.name for p in (tmp_path / "traces").iterdir()) == ["003-b_failing.jsonl", "003-b_failing.png"]
 
     suite = next(iter(JUnitXml.fromfile(str(report))))
     assert (suite.tests, suite.failures, suite.errors) == (4, 1, 1)

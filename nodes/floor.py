@@ -1,0 +1,23 @@
+"""omni.graph.nodes.Floor: the largest integer not above a number."""
+import math
+
+from graphflow.spec import Attribute, NodeSpec
+from graphflow_nodes._math import compute_unary
+
+SPEC = NodeSpec(
+    id="omni.graph.nodes.Floor",
+    version=1,
+    description="outputs:result = the largest integer not above a, as an integer; tuples and arrays elementwise.",
+    categories=("math:operator",),
+    ui_name="Floor",
+    inputs=(
+        Attribute("a", "any", description="A decimal number (or tuple or array of them)"),
+    ),
+    outputs=(
+        Attribute("result", "any", description="The integer(s)"),
+    ),
+)
+
+
+def compute(db):
+    compute_unary(db, math.floor, "a", "result")

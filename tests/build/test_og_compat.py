@@ -1,0 +1,113 @@
+"""Isaac-style scripts (og.Controller.edit) run with only their import changed, build the graphs
+graphflow ships, and what they build passes its checks."""
+import importlib.util
+import itertools
+import json
+import shutil
+
+import pytest
+from conftest import GRAPHS, ROOT
+
+from graphflow.build import og
+from graphflow.cli import main
+from graphflow.errors import BadInput
+from graphflow.model import GraphError
+from graphflow.verdicts.checked_run import run_checked
+
+SCRIPTS = ROOT / "tests" / "build" / "isaac_scripts"
+_paths = (f"/World/Graph{n}" for n in itertools.count())   # og keeps graphs by path: one per test
+
+
+def script(name: str):
+    spec = importlib.util.spec_from_file_location(f"isaac_script_{name}", SCRIPTS / f"{name}.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def finished_like(graph, shipped_name: str, folder):
+    """Give the built graph the shipped file's stage, checks and scenario, save it in *folder*."""
+    shipped = json.loads((GRAPHS / f"{shipped_name}.json").read_text())
+    built = graph.document.to_json()
+    assert built["nodes"] == shipped["nodes"] and built["connections"] == shipped["connections"]
+    for name, value in shipped["settings"].items():
+        graph.setting(name, value)
+    for check in shipped["checks"]:
+        graph.check(check["check"], **{key: value for key, value in check.items() if key != "check"})
+    path = folder / f"{shipped_name}.json"
+    graph.save(path)
+    if "scenario" in shipped:   # the scripted keys: the file and its key presses, as shipped
+        shutil.copy(GRAPHS / shipped["scenario"]["keys"], folder)
+        data = json.loads(path.read_text())
+        data["scenario"] = shipped["scenario"]
+        path.write_text(json.dumps(data))
+    return path
+
+
+@pytest.mark.slow
+def test_ported_ur10_pick_place_script_builds_the_tuned_graph_and_passes_its_checks(tmp_path):
+    graph = script("ur10_pick_place_tuned").create_pick_place_graph(next(_paths))
+    path = finished_like(graph, "ur10_pick_place_tuned", tmp_path)
+    assert main(["validate", str(path)]) == 0
+    verdict = run_checked(path)
+    assert verdict.failures == [] and verdict.passed
+    assert "Gripper CLOSE command issued. Status: SUCCESS (Object Gripped)" in verdict.output
+    assert verdict.stopped_by_graph
+
+
+@pytest.mark.slow
+def test_ported_gantry_script_builds_the_keyboard_graph_and_carries_the_box(tmp_path):
+    graph = script("gantry_surface_gripper").create_gantry_graph(next(_paths))
+    path = finished_like(graph, "gantry_keyboard", tmp_path)
+    assert main(["validate", str(path)]) == 0
+    verdict = run_checked(path)
+    assert verdict.failures == [] and verdict.passed
+
+
+def test_edit_again_extends_the_same_graph_and_deletes_in_omnigraph_order():
+    keys, path = og.Controller.Keys, next(_paths)
+    graph, nodes, _, lookup = og.Controller.edit({"graph_path": path, "evaluator_name": "execution"}, {
+        keys.CREATE_NODES: [("tick", "omni.isaac.core_nodes.OnPhysicsStep"), ("count", "omni.graph.action.Counter")],
+        keys.CREATE_VARIABLES: [("gain", og.Type(og.BaseDataType.DOUBLE))],
+        keys.CONNECT: ("tick.outputs:step", f"{path}/count.inputs:execIn"),
+    })
+    assert [node.name for node in nodes] == ["tick", "count"] and set(lookup) == {"tick", "count"}
+    assert graph.document.variables[0].type == "double"
+    again, *_ = og.Controller.edit(path, {keys.DELETE_NODES: ["count"],
+                                         keys.CREATE_NODES: [("count", "omni.graph.action.Counter"),
+                                                             ("text", "graphflow.FormatText")],
+                                         keys.SET_VALUES: [(("inputs:format", "text"), "{value} ticks")]})
+    assert again is graph and og.get_graph_by_path(path) is graph
+    assert graph.document.connections == ()   # deleting count took its connection with it
+    assert graph.document.node("text").inputs == {"format": "{value} ticks"}   # ("inputs:x", node) spelling
+
+
+def test_edit_refuses_what_it_cannot_build_with_one_line():
+    keys = og.Controller.Keys
+    with pytest.raises(BadInput, match="expose_prims not supported"):
+        og.Controller.edit(next(_paths), {"expose_prims": []})
+    with pytest.raises(BadInput, match="evaluator 'push'"):
+        og.Controller.edit({"graph_path": next(_paths), "evaluator_name": "push"}, {})
+    path = next(_paths)
+    with pytest.raises(GraphError, match="node 'write' input 'inputs:prim'|node 'write'.*no input 'primm'"):
+        og.Controller.edit(path, {keys.CREATE_NODES: [("write", "omni.graph.nodes.WritePrimAttribute")],
+                                  keys.SET_VALUES: [("write.inputs:primm", "/World/Cube")]})
+
+
+def test_controller_set_connect_and_attribute_address_ports_by_their_full_path():
+    keys, path = og.Controller.Keys, next(_paths)
+    _, (tick, text, show), _, _ = og.Controller.edit(path, {keys.CREATE_NODES: [
+        ("tick", "omni.graph.action.OnTick"), ("text", "graphflow.FormatText"), ("show", "omni.graph.ui_nodes.PrintText")]})
+    og.Controller.set(og.Controller.attribute(f"{path}/text.inputs:format"), "t = {value}")
+    og.Controller.set(og.Controller.attribute("inputs:value", text), 2.5)
+    og.Controller.connect(f"{path}/tick.outputs:tick", f"{path}/show.inputs:execIn")
+    og.Controller.connect(og.Controller.attribute(("outputs:text", text)), f"{path}/show.inputs:text")
+    graph = og.get_graph_by_path(path)
+    assert graph.document.node("text").inputs == {"format": "t = {value}", "value": 2.5}
+    assert [c.src for c in graph.document.connections] == ["tick.outputs:tick", "text.outputs:text"]
+    og.Controller.disconnect(f"{path}/tick.outputs:tick", f"{path}/show.inputs:execIn")
+    assert len(graph.document.connections) == 1
+    with pytest.raises(BadInput, match="/Nowhere/x.inputs:a: no graph made by og.Controller.edit holds it"):
+        og.Controller.set("/Nowhere/x.inputs:a", 1)
+    with pytest.raises(GraphError, match="node 'text' input 'inputs:formatt'"):
+        og.Controller.set(f"{path}/text.inputs:formatt", "x")
