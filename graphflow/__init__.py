@@ -1,4 +1,15 @@
 """graphflow: OmniGraph-style action graphs for robot manipulation, on PyBullet."""
+try:   # the graphflow command: from its first instruction a Ctrl-C is an interrupt (graphflow.errors)
+    from graphflow.errors import defer_interrupts as _defer_interrupts
+
+    _defer_interrupts()
+except KeyboardInterrupt:    # before the handler was in place
+    from graphflow.errors import is_the_command as _is_the_command
+    from graphflow.errors import note_interrupt as _note_interrupt
+
+    if not _is_the_command():
+        raise
+    _note_interrupt()
 import os as _os
 import sys as _sys
 

@@ -24,7 +24,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, Iterator
 
-from graphflow.errors import BadInput
+from graphflow.errors import BadInput, raise_if_interrupted
 
 MAX_INPUT_BYTES = 256 * 1024 * 1024
 MAX_JSON_DEPTH = 64      # graph documents nest about 5 levels; deeper input is an attack or a mistake
@@ -311,6 +311,7 @@ def atomic_output(target, *, force: bool = False, folder: bool = False) -> Itera
         raise FileProblem(target, f"cannot write: {error.strerror or error}") from None
     try:
         yield temporary
+        raise_if_interrupted()   # a Ctrl-C that the writer's code swallowed: no output, as for any other
         mask = _umask()
         if folder:
             _commit_folder(temporary, path, mask)

@@ -9,8 +9,6 @@ kept until the target moves by more than 0.1 m or turns by more than 0.05 rad.
 """
 import math
 
-import numpy as np
-
 from graphflow.spec import Attribute, NodeSpec
 from graphflow.types import ExecState
 from graphflow.world import WorldError
@@ -97,6 +95,7 @@ def _goal(db) -> tuple[float, float, float]:
 
 def _coefficients(start, start_speed, start_accel, end, end_speed, end_accel, duration):
     """a0..a5 of the quintic meeting position, speed and acceleration at t = 0 and t = duration."""
+    import numpy as np
     a0, a1, a2 = start, start_speed, start_accel / 2.0
     t = duration
     matrix = np.array([[t ** 3, t ** 4, t ** 5], [3 * t ** 2, 4 * t ** 3, 5 * t ** 4], [6 * t, 12 * t ** 2, 20 * t ** 3]])
@@ -116,6 +115,7 @@ def _derivatives(a, t):
 
 def plan_path(start, start_speed, start_accel, goal, goal_speed, goal_accel, max_accel, max_jerk, step):
     """(speeds, xs, ys, yaws) sampled every *step* s on the shortest admissible duration; ValueError if none."""
+    import numpy as np  # here, not at the top: loading the node library imports no numpy
     if not step > 0.0:
         raise ValueError(f"inputs:step must be positive, got {step}")
     (sx, sy, syaw), (gx, gy, gyaw) = start, goal

@@ -11,8 +11,6 @@ tightens the turn by 1 + |wheelBase w / v| gains[1] / step.
 """
 import math
 
-import numpy as np
-
 from graphflow.spec import Attribute, NodeSpec
 from graphflow.types import ExecState
 from graphflow_nodes._wheeled import normalize_angle, yaw_of
@@ -101,6 +99,7 @@ def _drive(db, linear, angular):
 
 def _take_path(db):
     """Split pathArrays into speeds, x, y, yaw; build the speed profile; restart at the path's first sample."""
+    import numpy as np  # here, not at the top: loading the node library imports no numpy
     arrays, path = db.inputs.pathArrays, db.internal
     count = len(arrays) // 4
     if count == 0:
@@ -114,6 +113,7 @@ def _take_path(db):
 
 def _speed_profile(db, speeds, max_speed):
     """The path's speeds scaled so the fastest is max_speed, slowed over the last third towards the goal."""
+    import numpy as np
     fastest = float(np.max(np.abs(speeds)))
     if fastest == 0.0:
         db.error("inputs:pathArrays: every path speed is 0, so there is no speed profile to follow")
@@ -126,6 +126,7 @@ def _speed_profile(db, speeds, max_speed):
 
 def _stanley_steer(db, x, y, yaw, speed, wheel_base):
     """Heading error plus cross-track term at the front axle, against the nearest sample not behind the last."""
+    import numpy as np
     path = db.internal
     front_x, front_y = x + wheel_base * math.cos(yaw), y + wheel_base * math.sin(yaw)
     dx, dy = front_x - path["x"], front_y - path["y"]

@@ -1,6 +1,4 @@
 """omni.graph.nodes.ToFloat: numbers (or bools) as 32-bit floats, keeping tuple and array shapes."""
-import numpy as np
-
 from graphflow.spec import Attribute, NodeSpec
 from graphflow_nodes._math import MathError, elementwise, is_boolean, is_number
 
@@ -22,6 +20,8 @@ SPEC = NodeSpec(
 
 
 def compute(db):
+    import numpy as np  # only when the node runs: loading the node library imports no numpy
+
     if db.inputs.value is None:
         db.error("inputs:value has no value; connect it or set a value")
     try:

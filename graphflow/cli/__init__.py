@@ -20,6 +20,7 @@ from graphflow.errors import (
     EXIT_OK,
     EXIT_RUN_FAILED,
     GraphflowError,
+    interrupted,
 )
 
 __all__ = ["build_parser", "main"]
@@ -71,6 +72,8 @@ def _main(argv: list[str] | None) -> int:
         sys.stderr.close()
         return EXIT_OK
     except GraphflowError as error:
+        if interrupted():   # a Ctrl-C turned into this error on its way (an import, a world build)
+            raise KeyboardInterrupt from None
         if isinstance(error.__cause__, BrokenPipeError):   # a print node's reader (head) has gone: done
             sys.stderr.close()
             return EXIT_OK
@@ -81,6 +84,8 @@ def _main(argv: list[str] | None) -> int:
             print(f"{prefix}{line}", file=sys.stderr)
         return error.exit_code
     except Exception as error:  # a bug: one line, never a traceback unless debugging
+        if interrupted():   # numpy's import turns a Ctrl-C into an ImportError
+            raise KeyboardInterrupt from None
         if level == "debug":
             raise
         print(f"graphflow: unexpected error: {type(error).__name__}: {error}", file=sys.stderr)

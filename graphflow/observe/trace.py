@@ -193,7 +193,7 @@ class TraceRecorder:
         self._exec_names = [frozenset(a.name for a in node.spec.exec_outputs) for node in nodes]
         self._databases = [self.instance.database(node.name) for node in nodes]
         self._slots: list | None = None
-        self._raw: dict[str, Any] = {}    # each output's value as last seen, to skip converting unchanged ones
+        self._raw: list[Any] = []         # each output's value as last seen, to skip converting unchanged ones
         self._outputs = self._output_values()
         from graphflow.observe.trace_scene import SceneSection
 
@@ -257,17 +257,25 @@ class TraceRecorder:
                            for node, database, exec_names in zip(self.instance.compiled.nodes, self._databases,
                                                                  self._exec_names)
                            for name in database.outputs.__dict__ if name not in exec_names]
+            self._raw = [_MISSING] * len(self._slots)
         return {key: to_json_value(outputs[name]) for outputs, name, key in self._slots}
 
     def _changed_outputs(self) -> dict[str, Any]:
         """Outputs whose written value changed; an immutable value equal to the last one is skipped unconverted."""
-        changed, written, raw_values = {}, self._outputs, self._raw
-        for outputs, name, key in self._slots:
+        changed, written, last_raw = {}, self._outputs, self._raw
+        for index, (outputs, name, key) in enumerate(self._slots):
             raw = outputs[name]
-            previous = raw_values.get(key, _MISSING)
-            if type(previous) is type(raw) and _plain(raw) and (previous is raw or previous == raw):
+            previous = last_raw[index]
+            kind = type(raw)
+            if kind is type(previous) and _unchanged(kind, previous, raw):
                 continue
-            raw_values[key] = raw
+            last_raw[index] = raw
+            if kind in _SCALARS:   # the common case, converted and compared without the general walk
+                value = raw
+                old = written.get(key, _MISSING)
+                if old is _MISSING or (old != value and not (value != value and old != old)):   # NaN stays NaN
+                    changed[key] = written[key] = value
+                continue
             value = to_json_value(raw)
             if _changed(written.get(key, _MISSING), value):
                 changed[key] = written[key] = value
@@ -300,9 +308,19 @@ _MISSING = object()
 _SCALARS = (float, int, str, bool, type(None))
 
 
-def _plain(value: Any) -> bool:
-    """Immutable and compared by value: a scalar, or a tuple of scalars (never a list or an array a node may mutate)."""
-    return type(value) in _SCALARS or (type(value) is tuple and all(type(item) in _SCALARS for item in value))
+def _unchanged(kind: type, previous: Any, raw: Any) -> bool:
+    """The same immutable value as last tick: a scalar, or a tuple of scalars (never a list or an array a node
+    may mutate in place)."""
+    if kind in _SCALARS:
+        return previous is raw or previous == raw
+    if kind is not tuple:
+        return False
+    try:
+        if not (previous is raw or previous == raw):
+            return False
+    except ValueError:   # an array inside: its truth is ambiguous
+        return False
+    return all(type(item) in _SCALARS for item in raw)
 
 
 def _changed(previous: Any, value: Any) -> bool:

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 import pybullet
 
-from graphflow.physics.drive_law import MOTOR_MAX_FORCE, drive_efforts, motor_velocity
+from graphflow.physics.drive_law import MOTOR_MAX_FORCE, UNREACHED_SPEED, drive_efforts, motor_velocity
 from graphflow.physics.handles import ArticulationHandle, BodyHandle
 from graphflow.poses import quat_conjugate, quat_rotate
 from graphflow.usd.description import StageDescription
@@ -57,6 +57,7 @@ class JointControl:
         self.limits = {path: [(joints[j].lower, joints[j].upper) for j in articulation.joint_paths]
                        for path, articulation in scene.articulations.items()}
         self._plans: dict[str, tuple] = {}        # per articulation: its links' weights, for the switches' version
+        self._sent: dict[str, list] = {}          # per articulation: last step's motor velocity targets (USD)
         self._version = -1
 
     def torques(self, dt: float) -> list[tuple[ArticulationHandle, list[float]]]:
@@ -81,13 +82,18 @@ class JointControl:
         inertia = joint_inertia(client, articulation, raw_positions)    # diagonal unchanged by the signs
         target_positions, target_velocities = targets.positions, targets.velocities
         positions, velocities, motors = [], [], []
+        sent = self._sent.get(articulation.path)
         for dof, (sign, state, drive) in enumerate(zip(signs, states, drives)):
             position = sign * state[0]
             positions.append(position)
             velocities.append(sign * state[1])
-            motors.append(None if drive is None else
-                          motor_velocity(drive, target_positions[dof], target_velocities[dof], float(inertia[dof][dof]),
-                                         position, sign * state[3], dt))
+            motor = None if drive is None else motor_velocity(drive, target_positions[dof], target_velocities[dof],
+                                                              float(inertia[dof][dof]), position, sign * state[3], dt)
+            if motor is not None and sent is not None and sent[dof] is not None:
+                # what the solver left of last step's target (it stops at SOLVER_RESIDUAL), given back
+                unreached = sent[dof] - velocities[dof]
+                motor += max(-UNREACHED_SPEED, min(UNREACHED_SPEED, unreached))
+            motors.append(motor)
         load, cancelling = self._joint_gravity(articulation, raw_positions)
         if all(motor is not None for motor in motors):     # every DOF a motor (the UR10): no torque law to solve
             efforts, accelerations = targets.efforts, None
@@ -116,6 +122,8 @@ class JointControl:
                 forces.append(0.0)
         client.setJointMotorControlArray(articulation.body_id, articulation.joint_indices, pybullet.VELOCITY_CONTROL,
                                          targetVelocities=velocity_targets, forces=forces)
+        self._sent[articulation.path] = [None if motor is None else sign * target
+                                         for motor, sign, target in zip(motors, signs, velocity_targets)]
         return [sign * effort + cancel for sign, effort, cancel in zip(signs, efforts, cancelling)]
 
     def _gravity_plan(self, articulation: ArticulationHandle) -> tuple:

@@ -11,7 +11,7 @@ import sys
 import time
 from pathlib import Path
 
-from graphflow.errors import EXIT_INTERRUPTED
+from graphflow.errors import EXIT_INTERRUPTED, interrupt_handled
 from graphflow.sweep.definition import EPISODES_CSV, SUMMARY_CSV, load_sweep
 from graphflow.sweep.launchers import LocalPool, RayPool
 from graphflow.sweep.results import (
@@ -84,6 +84,7 @@ def run_sweep(path: str, *, out: str | None = None, jobs: int | None = None, ray
             bar.update(record)
     except KeyboardInterrupt:
         interrupted = True
+        interrupt_handled()   # the summary of the kept episodes is written on purpose
     finally:
         running.close()
         bar.finish()

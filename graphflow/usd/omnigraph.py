@@ -192,8 +192,8 @@ def _import_one(stage, graph_prim, label: str, registry: Registry, skip_unknown:
                             missing_assets.append({"node": name, "input": f"inputs:{attribute.name}",
                                                    "message": missing[0]})
         entry = {"name": name, "type": type_id, "inputs": inputs}
-        if version is not None:
-            entry["typeVersion"] = int(version)
+        if version is not None:   # ports were mapped to graphflow's version above: the file is written at it
+            entry["typeVersion"] = node_type.spec.version if node_type is not None else int(version)
         if not entry["inputs"]:
             del entry["inputs"]
         nodes.append(entry)

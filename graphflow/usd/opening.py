@@ -84,11 +84,13 @@ def missing_layer_lines(label: str, messages: list[str], table, failures: dict |
         prims = lost.setdefault((asset, arc, layer), [])
         if arc != "sublayer":
             prims.append(str(Sdf.Path(match["prim"]).StripAllVariantSelections()))
-    for (asset, arc, layer), prims in lost.items():
+    # usd-core composes in parallel: its messages come in any order, so the lines are put in one
+    lines.sort()
+    for (asset, arc, layer), prims in sorted(lost.items()):
         if arc == "sublayer":
             what = f"a sublayer of layer {layer}: prims lost: every prim that layer defines"
         else:
-            shown = ", ".join(dict.fromkeys(prims))
+            shown = ", ".join(sorted(set(prims)))
             what = (f"the {arc} of {shown} in layer {layer}: prims lost: everything that {arc} puts "
                     f"below {shown}")
         lines.append(f"{label}: cannot open {asset}, {what}{_hint(asset, table, failures or {})}")

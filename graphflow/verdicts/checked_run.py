@@ -21,7 +21,7 @@ from pathlib import Path
 from typing import Any, Iterable, Sequence
 
 from graphflow.document import GraphDocument, load_document
-from graphflow.errors import BadInput
+from graphflow.errors import BadInput, raise_if_interrupted
 from graphflow.executor import GraphRuntimeError
 from graphflow.seeding import seed_everything
 from graphflow.verdicts.checks import CheckEvaluator
@@ -237,6 +237,7 @@ class CheckedRun:
         else:
             world = create_world_for(self.document, gui=self.gui, parsed=self._parsed)
         self.simulation = Simulation(self.document, world=world, gui=self.gui)
+        raise_if_interrupted()   # a Ctrl-C during the stage load that usd-core's C++ swallowed
         self.inputs.attach(self.simulation.world)
         for listener in (*self.listeners, self.evaluator):
             self.simulation.add_listener(listener)

@@ -129,3 +129,12 @@ def test_other_file_outputs_given_a_folder_are_refused_before_work(tmp_path, cap
         code, out, err = run_cli(capsys, *command)
         assert code == 2 and out == ""
         assert clean_lines(err) == [f"graphflow: error: {folder}: is a folder, not a file"]
+
+
+def test_a_sweep_of_endless_episodes_is_refused_like_run_seconds(tmp_path, capsys):
+    """``"seconds": 1e308`` ran until each episode's graph stopped itself; ``run --seconds`` stops at 1e7."""
+    path = write(tmp_path / "s.json", {"format": "graphflow-sweep", "formatVersion": [1, 0], "graph": str(TUNED),
+                                       "seconds": 1e308, "seeds": 1})
+    code, _out, err = run_cli(capsys, "sweep", path, "--out", tmp_path / "results")
+    assert code == 2
+    assert clean_lines(err) == [f"graphflow: error: {path}: seconds: 1e+308 is greater than the maximum of 10000000"]

@@ -124,3 +124,14 @@ def test_array_reverse_rotate_remove_and_insert_values():
     assert out("ArrayInsertValue", array=[1, 2, 3], index=1, value=9) == (1, 9, 2, 3)
     assert out("ArrayInsertValue", array=[1, 2], index=-1, value=0) == (0, 1, 2)
     assert out("ArrayInsertValue", array=[1, 2], index=7, value=3) == (1, 2, 3)
+
+
+def test_array_find_value_gives_the_first_index_or_minus_one():
+    from graphflow.testing import NodeHarness
+
+    def find(array, value):
+        return NodeHarness("omni.graph.nodes.ArrayFindValue", {"array": array, "value": value}).compute().outputs["index"]
+
+    assert find([4, 7, 7], 7) == 1
+    assert find([[0.0, 1.0], [1.0, 0.0]], [1.0, 0.0]) == 1
+    assert find([1, 2], 3) == -1

@@ -60,6 +60,12 @@ def test_constants_and_targets_size_pass_their_values_on():
     assert __import__("graphflow.testing").testing.NodeHarness("omni.graph.nodes.GetTargetsSize", {"targets": ["/a", "/b", "/c"]}).compute().outputs["size"] == 3
     for type_id, value in (("ConstantHalf", 0.5), ("ConstantInt2", [1, 2]), ("ConstantPoint3f", [1.0, 2.0, 3.0]),
                            ("ConstantDouble4", [1.0, 2.0, 3.0, 4.0]), ("ConstantFloat4", [1.0, 2.0, 3.0, 4.0]),
-                           ("ConstantQuatf", [0.0, 0.0, 0.0, 1.0]), ("ConstantVector3f", [0.0, 1.0, 0.0])):
+                           ("ConstantQuatf", [0.0, 0.0, 0.0, 1.0]), ("ConstantVector3f", [0.0, 1.0, 0.0]),
+                           ("ConstantColor3d", [0.1, 0.2, 0.3]), ("ConstantColor3f", [0.5, 0.5, 0.5]),
+                           ("ConstantColor4d", [0.1, 0.2, 0.3, 1.0]), ("ConstantColor4f", [0.0, 0.0, 0.0, 1.0]),
+                           ("ConstantHalf2", [0.5, 1.5]), ("ConstantHalf3", [0.5, 1.5, 2.5]), ("ConstantInt3", [1, 2, 3]),
+                           ("ConstantInt4", [1, 2, 3, 4]), ("ConstantNormal3d", [0.0, 0.0, 1.0]),
+                           ("ConstantNormal3f", [1.0, 0.0, 0.0]), ("ConstantQuath", [0.0, 0.0, 0.0, 1.0]),
+                           ("ConstantTarget", ["/World/a", "/World/b"])):
         out = __import__("graphflow.testing").testing.NodeHarness(f"omni.graph.nodes.{type_id}", {"value": value}).compute().outputs["value"]
         assert out == (tuple(value) if isinstance(value, list) else value)

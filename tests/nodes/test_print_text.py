@@ -77,3 +77,21 @@ def test_string_nodes_append_join_and_measure():
     assert out("AppendString", "value", value="/World", suffix="/Cube") == "/World/Cube"
     assert out("JoinString", "string", delimiter=", ", elements=["x", "y", "z"]) == "x, y, z"
     assert out("GetStringLength", "length", string="graphflow") == 9
+
+
+def test_capitalize_string_operations():
+    from graphflow.testing import NodeHarness
+
+    cases = {"UpperCase": "ROBOT ARM", "LowerCase": "robot arm", "Capitalize": "Robot arm", "Title": "Robot Arm"}
+    for operation, expected in cases.items():
+        node = NodeHarness("omni.graph.nodes.CapitalizeString", {"operation": operation, "string": "roBOT arm"})
+        assert node.compute().outputs["string"] == expected
+
+
+def test_parent_and_appended_paths():
+    from graphflow.testing import NodeHarness
+
+    parent = NodeHarness("omni.graph.nodes.GetParentPath", {"path": ["/World/Cube", "/World"]}).compute()
+    assert parent.outputs["parentPath"] == ("/World", "/")
+    appended = NodeHarness("omni.graph.nodes.AppendPath", {"path": "/World", "suffix": "Cube.attr"}).compute()
+    assert appended.outputs["path"] == "/World/Cube.attr"

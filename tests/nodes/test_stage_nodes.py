@@ -90,3 +90,25 @@ def test_clamped_keyboard_style_graph_drives_the_gantry_to_its_limit(gantry):
     dof = gantry.joint_names(Y_JOINT).index("y_joint")
     assert gantry.joint_positions(Y_JOINT)[dof] == pytest.approx(0.45, abs=1e-3)
     assert harness.output("clamp", "minimum") == pytest.approx(0.45)
+
+
+def test_is_prim_active_and_get_prim_relationship_read_the_stage():
+    from pxr import Usd
+
+    from graphflow.executor import GraphRuntimeError
+    from graphflow.testing.fake_world import FakeWorld
+
+    stage = Usd.Stage.CreateInMemory()
+    stage.DefinePrim("/World/On")
+    stage.DefinePrim("/World/Off").SetActive(False)
+    stage.DefinePrim("/World/Gripper").CreateRelationship("grips").SetTargets(["/World/On", "/World/Off"])
+    world = FakeWorld(stage=stage)
+
+    def out(type_id, output, **inputs):
+        return NodeHarness(f"omni.graph.nodes.{type_id}", inputs, world=world).compute().outputs[output]
+
+    assert out("IsPrimActive", "active", primTarget=["/World/On"]) is True
+    assert out("IsPrimActive", "active", prim="/World/Off") is False
+    assert out("GetPrimRelationship", "paths", path="/World/Gripper", name="grips") == ("/World/On", "/World/Off")
+    with pytest.raises(GraphRuntimeError, match="has no relationship 'holds'"):
+        out("GetPrimRelationship", "paths", path="/World/Gripper", name="holds")

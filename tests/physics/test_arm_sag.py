@@ -13,10 +13,7 @@ from graphflow.physics import create_world
 from .arms import PANDA, UR5E, write_usda
 
 SECONDS = 3.0
-# A drive PyBullet solves as a velocity motor stops short of its load by what the solver leaves when it
-# stops iterating at SOLVER_RESIDUAL: measured 0.215 N m on the all-motor Panda's joint 6 (a 1.16 N m load:
-# 19 % of its 0.57 mrad sag); with the residual at 1e-12 every joint is within 1 %.
-MOTOR_RESIDUAL_TORQUE = 0.25     # N m
+UNLOADED = 1e-5     # rad: a joint gravity does not load (the base yaw, the last wrist) stays within this of its target
 
 
 def held_positions(arm, tmp_path) -> np.ndarray:
@@ -31,9 +28,8 @@ def held_positions(arm, tmp_path) -> np.ndarray:
 def assert_sags_as_inverse_dynamics_says(arm, tmp_path):
     positions = held_positions(arm, tmp_path)
     sag, expected = positions - np.array(arm.home), arm.static_positions() - np.array(arm.home)
-    for joint, (measured, reference, k) in enumerate(zip(sag, expected, arm.stiffness)):
-        assert abs(measured - reference) <= max(0.05 * abs(reference), MOTOR_RESIDUAL_TORQUE / k), \
-            (arm.name, joint + 1, measured, reference)
+    for joint, (measured, reference) in enumerate(zip(sag, expected)):
+        assert abs(measured - reference) <= max(0.05 * abs(reference), UNLOADED), (arm.name, joint + 1, measured, reference)
 
 
 def test_ur5e_with_menageries_gains_sags_by_gravity_torque_over_stiffness(tmp_path):
@@ -50,8 +46,10 @@ def test_panda_like_arm_with_turned_inertial_frames_and_mixed_gains(tmp_path):
 
 
 def test_panda_like_arm_with_menageries_gains(tmp_path):
-    """Menagerie's own gains put every joint on a motor: joint 2 0.00361 rad (16.2 N m / 4500) and joint 4
-    -0.00523 rad (-18.4 N m / 3500) as expected to 0.6 %; joint 6 within the solver residual (above)."""
+    """Menagerie's own gains put every joint on a motor: joint 2 0.00361 rad (16.2 N m / 4500), joint 4
+    -0.00523 rad (-18.4 N m / 3500), joint 6 -0.00057 rad (-1.16 N m / 2000), each as expected. (A motor
+    stopped short of its load by what the solver left of its target when it stops at SOLVER_RESIDUAL:
+    0.215 N m, 19 % of joint 6's sag, until that is given back the next step.)"""
     assert_sags_as_inverse_dynamics_says(PANDA, tmp_path)
 
 

@@ -141,3 +141,19 @@ def test_the_header_names_seed_overrides_and_drawn_randomization(tmp_path):
     assert header["seed"] == 7
     assert header["overrides"] == ["format_count.format=n = {value}"]
     assert header["randomization"] in ({"at_least_three.b": 5}, {"at_least_three.b": 6})
+
+
+def test_a_run_time_failure_is_in_the_report_and_leaves_other_checks_unjudged(tmp_path):
+    graph = tmp_path / "fails.json"
+    graph.write_text(json.dumps({
+        "format": "graphflow", "formatVersion": [1, 0], "settings": {"timeStep": 0.5, "duration": 3.0},
+        "nodes": [{"name": "tick", "type": "omni.graph.action.OnTick"},
+                  {"name": "never", "type": "graphflow.Assert", "inputs": {"condition": False, "message": "it must hold"}}],
+        "connections": [{"src": "tick.outputs:tick", "dst": "never.inputs:execIn"}],
+        "checks": [{"check": "stopsBy", "time": 2.0}]}))
+    report = tmp_path / "fails.html"
+    result = graphflow("run", str(graph), "--report", str(report))
+    assert result.returncode == 1
+    stops_by, failure = embedded(report)["checks"]
+    assert stops_by["passed"] is None                      # the run never reached its end: not judged
+    assert failure["passed"] is False and "never" in failure["measured"] and "it must hold" in failure["measured"]
