@@ -45,14 +45,14 @@ def graph_layout(document) -> dict:
     return {"nodes": nodes, "edges": edges}
 
 
-def _finite(value):
+def json_safe(value):
     """JSON.parse reads no NaN or Infinity: non-finite floats become their names as strings."""
     if isinstance(value, float) and not math.isfinite(value):
         return "NaN" if math.isnan(value) else ("Infinity" if value > 0 else "-Infinity")
     if isinstance(value, list):
-        return [_finite(item) for item in value]
+        return [json_safe(item) for item in value]
     if isinstance(value, dict):
-        return {key: _finite(item) for key, item in value.items()}
+        return {key: json_safe(item) for key, item in value.items()}
     return value
 
 
@@ -96,7 +96,7 @@ def run_data(trace: Trace, document, info: RunInfo = RunInfo()) -> dict:
         for path, close in record.get("rays", {}).items():
             rays.append({"tick": tick, "gripper": path, "rays": close["rays"]})
             limits[path] = [{"name": name, "value": value} for name, value in close["limits"].items()]
-    return _finite({
+    return json_safe({
         "format": "graphflow-report", "version": 1,
         "header": {"graph": header.get("graph"), "description": header.get("description", ""),
                    "stage": header.get("stage"), "seed": info.seed, "overrides": list(info.overrides),

@@ -59,7 +59,7 @@ async def _body(request: Request) -> dict:
 
 async def stream_live(websocket: WebSocket, path, folder) -> None:
     """Run *path* live for one page: its commands in, the run's frames out, until the page goes."""
-    from graphflow.report.build import _finite as json_safe  # NaN and infinities as the report writes them
+    from graphflow.report.build import json_safe  # NaN and infinities as the report writes them
     from graphflow.studio.live import LiveRun, report_path
 
     loop, outbox = asyncio.get_running_loop(), asyncio.Queue()
