@@ -76,17 +76,23 @@ def command_validate(args) -> int:
 
 
 def _validate(graphs: list[str], allow_missing_assets: bool) -> int:
-    from graphflow.validate.preflight import file_problems
+    from graphflow.document import GraphError
+    from graphflow.validate.preflight import file_problems, parse_stage
     from graphflow.validate.stage_names import deep_validate
 
     failed = False
     for path in graphs:
         document, problems, warnings_ = _scenario_table(path)   # a table: its graph with the table's checks
         if document is None and not problems:
-            problems = file_problems(path)
-            document = None if problems else load_document(path)
-        if not problems:   # the graph and its stage load: check what the graph names on that stage
-            problems, warnings_ = deep_validate(document, allow_missing_assets=allow_missing_assets)
+            try:
+                document = load_document(path)
+            except GraphError:   # every problem at once: the file's and its stage's
+                problems = file_problems(path)
+        parsed = None
+        if not problems and document.settings.get("stage"):   # read once, then checked for what the graph names
+            problems, parsed = parse_stage(str(path), document.settings["stage"], document.base_dir)
+        if not problems:
+            problems, warnings_ = deep_validate(document, allow_missing_assets=allow_missing_assets, parsed=parsed)
         for problem in warnings_:
             print(f"warning: {problem}", file=sys.stderr)
         for problem in problems:

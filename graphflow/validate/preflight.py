@@ -31,17 +31,18 @@ def parse_stage(source: str, stage: str, base_dir: str | os.PathLike, *,
                 quiet: bool = True) -> tuple[list[Problem], ParsedStage | None]:
     """Open and parse *stage* (a ``settings.stage`` value of the file *source*): (problems, the parsed stage).
 
-    *quiet* keeps the parser's unsupported-prim warnings to itself (``validate``); a run shows them, once.
+    *quiet* keeps the parser's unsupported-prim warnings to itself (``validate``); a run shows them, once. A layer
+    that cannot be opened is always said.
     """
     from graphflow.usd.errors import StageError
     from graphflow.usd.physics_import import load_description, open_stage
     from graphflow.usd.resolver import resolve_stage
 
     try:
+        usd_stage, _label = open_stage(resolve_stage(stage, base_dir))   # a missing layer is said either way
         with warnings.catch_warnings():
             if quiet:
                 warnings.simplefilter("ignore")    # unsupported prims are simulated without; not a problem
-            usd_stage, _label = open_stage(resolve_stage(stage, base_dir))
             description = load_description(usd_stage)
     except StageError as error:
         return stage_error_problems(source, error), None

@@ -8,21 +8,7 @@ from conftest import ROOT
 
 from graphflow import cli
 
-
-def counter_scenario(stop_at: int = 3, **extra) -> dict:
-    """Counts 0.5 s ticks and stops at *stop_at*; a stopsBy check at 2 s."""
-    return {"format": "graphflow", "formatVersion": [1, 0], "settings": {"timeStep": 0.5, "duration": 10.0},
-            "nodes": [{"name": "tick", "type": "omni.graph.action.OnTick"},
-                      {"name": "counter", "type": "omni.graph.action.Counter"},
-                      {"name": "enough", "type": "omni.graph.nodes.Compare", "inputs": {"b": stop_at, "operation": ">="}},
-                      {"name": "branch", "type": "omni.graph.action.Branch"},
-                      {"name": "stop", "type": "graphflow.StopRun"}],
-            "connections": [{"src": "tick.outputs:tick", "dst": "counter.inputs:execIn"},
-                            {"src": "counter.outputs:count", "dst": "enough.inputs:a"},
-                            {"src": "counter.outputs:execOut", "dst": "branch.inputs:execIn"},
-                            {"src": "enough.outputs:result", "dst": "branch.inputs:condition"},
-                            {"src": "branch.outputs:execTrue", "dst": "stop.inputs:execIn"}],
-            "checks": [{"check": "stopsBy", "time": 2.0}], **extra}
+from .counter_graphs import counter_scenario
 
 
 def run_cli(capsys, *args):
