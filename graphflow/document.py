@@ -38,7 +38,7 @@ def json_schema() -> dict:
     return json.loads(text)
 
 
-def _schema_problems(data: Any, source: str) -> list[Problem]:
+def document_schema_problems(data: Any, source: str) -> list[Problem]:
     import jsonschema
 
     validator = jsonschema.Draft202012Validator(json_schema())
@@ -67,7 +67,7 @@ def parse_document(data: Any, source: str = "<graph>", registry: Registry | None
 
     *schema_problems* replaces the whole-file schema check (``graphflow.build`` checks only the entries a call changed).
     """
-    problems = (schema_problems or _schema_problems)(data, source)
+    problems = (schema_problems or document_schema_problems)(data, source)
     if problems:
         raise GraphError(problems + _problems_of_valid_parts(data, source, registry, problems))
     major = data["formatVersion"][0]

@@ -127,3 +127,15 @@ def test_nodes_reach_physics_only_through_the_world_they_are_given():
     importers = sorted(str(path.relative_to(ROOT)) for path in (ROOT / "nodes").rglob("*.py")
                        if any(module.startswith("graphflow.physics") for module, _ in _imports(path)))
     assert importers == []
+
+
+def test_no_private_name_is_imported_across_modules():
+    """A leading underscore means "this module's own": another module that needs it gets a public name instead."""
+    offenders = []
+    for folder in (PACKAGE, ROOT / "nodes"):
+        for path in folder.rglob("*.py"):
+            for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+                if isinstance(node, ast.ImportFrom) and (node.module or "").startswith(("graphflow", "graphflow_nodes")):
+                    offenders += [f"{path.relative_to(ROOT)}:{node.lineno} {alias.name}" for alias in node.names
+                                  if alias.name.startswith("_") and not alias.name.startswith("__")]
+    assert offenders == []

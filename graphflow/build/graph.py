@@ -299,7 +299,7 @@ _SECTIONS = ("nodes", "connections", "variables", "checks")
 
 def _changed_entries_schema(before: dict):
     """A schema check of only the section entries that differ from *before*, its problems at their real index."""
-    from graphflow.document import _schema_problems
+    from graphflow.document import document_schema_problems
 
     def check(data: dict, source: str) -> list[Problem]:
         reduced = {key: value for key, value in data.items() if key not in _SECTIONS}
@@ -310,7 +310,7 @@ def _changed_entries_schema(before: dict):
                 positions[section] = [i for i, entry in enumerate(new) if i >= len(old) or entry != old[i]]
                 reduced[section] = [new[i] for i in positions[section]]
         reduced.setdefault("nodes", [])
-        return [_at_real_index(problem, positions) for problem in _schema_problems(reduced, source)]
+        return [_at_real_index(problem, positions) for problem in document_schema_problems(reduced, source)]
     return check
 
 
