@@ -191,7 +191,7 @@ export default function SceneView({ run, tick, held, onReady }) {
       element.removeChild(renderer.domElement);
       state.current = null;
     };
-  }, [run]);
+  }, [run.scene]);   // the scene is built once per stage; a live run grows its poses, not its scene
 
   useEffect(() => {
     const current = state.current;

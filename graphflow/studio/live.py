@@ -19,6 +19,7 @@ from typing import Callable
 from graphflow.document import load_document
 from graphflow.errors import BadInput, GraphflowError
 from graphflow.studio.browser_input import BrowserKeys, BrowserPad
+from graphflow.studio.frame_scene import scene_part
 
 FRAME_SECONDS = 1 / 30
 logger = logging.getLogger(__name__)
@@ -171,14 +172,14 @@ class LiveRun:
         self._sent += len(records)
         frame: dict = {"type": "frame", "tick": self.simulation.tick_count, "time": self.simulation.world.time,
                        "playing": self._running(), "speed": self.speed, "ended": self.ended,
-                       "outputs": {}, "computed": [], "grippers": {}, "poses": {}, "log": []}
+                       "outputs": {}, "computed": [], "grippers": {}, "log": [],
+                       **scene_part(self.recording.records[0], records)}
         computed: set[str] = set()
         for record in records:
             frame["outputs"].update(record.get("outputs", {}))
             computed.update(record.get("computed", ()))
             for path, fields in record.get("grippers", {}).items():
                 frame["grippers"].setdefault(path, {}).update(fields)
-            frame["poses"].update(record.get("poses", {}))
             frame["log"].extend([record["tick"], line["node"], line["level"], line["message"]]
                                 for line in record.get("log", ()))
         frame["computed"] = sorted(computed)

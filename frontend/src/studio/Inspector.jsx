@@ -1,6 +1,7 @@
 // The selected node: rename, delete, and its authored inputs with widgets from the spec
 // (tokens as menus, numbers with the spec's range, booleans as boxes, anything else as JSON).
 import React, { useState } from "react";
+import { shortValue } from "../data.js";
 
 function parsedValue(port, text) {
   if (port.tokens) return text;
@@ -47,7 +48,28 @@ function InputWidget({ port, value, onChange }) {
   );
 }
 
-export default function Inspector({ node, type, problems, onRename, onDelete, onInput }) {
+function LiveOutputs({ node, type, live, pinned, onPin }) {
+  const ports = type ? type.outputs.filter((port) => !port.execution) : [];
+  return (
+    <table className="gf-live-outputs" data-testid="live-outputs">
+      <tbody>
+        {ports.map((port) => {
+          const key = `${node.name}.${port.name}`;
+          return (
+            <tr key={key}>
+              <th>{port.name}</th>
+              <td data-output={key}>{shortValue(live.outputs[key])}</td>
+              <td><button type="button" data-pin={key} disabled={pinned.includes(key)} title="plot it in the lanes"
+                          onClick={() => onPin(key)}>📌</button></td>
+            </tr>
+          );
+        })}
+      </tbody>
+    </table>
+  );
+}
+
+export default function Inspector({ node, type, problems, onRename, onDelete, onInput, live, pinned, onPin }) {
   const [name, setName] = useState(node.name);
   const mine = problems.filter((problem) => problem.node === node.name);
   const authored = node.inputs || {};
@@ -70,6 +92,7 @@ export default function Inspector({ node, type, problems, onRename, onDelete, on
           ))}
         </tbody>
       </table>
+      {live && <><h3>Outputs, live</h3><LiveOutputs node={node} type={type} live={live} pinned={pinned} onPin={onPin} /></>}
     </section>
   );
 }

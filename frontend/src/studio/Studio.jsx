@@ -6,6 +6,8 @@ import Palette from "./Palette.jsx";
 import Inspector from "./Inspector.jsx";
 import StudioGraph from "./StudioGraph.jsx";
 import { LiveBar, LivePanel } from "./Live.jsx";
+import LiveScene from "./LiveScene.jsx";
+import { startView, withFrame } from "./liveView.js";
 import "./studio.css";
 
 const NO_LIVE = { outputs: {}, computed: new Set(), grippers: {}, log: [], tick: 0, time: 0, playing: false, speed: 1 };
@@ -41,6 +43,11 @@ export default function Studio({ config }) {
   const watched = useRef(null);
   const socket = useRef(null);
   const checkCount = useRef(0);
+  const [pinned, setPinned] = useState([]);   // outputs plotted in the live lanes
+  const pinnedNow = useRef(pinned);
+  pinnedNow.current = pinned;
+  const view = useRef(null);                  // the live run as the scene and lanes read it (liveView.js)
+  const scene = useRef(null);
 
   const load = useCallback(() => call(config, "GET", `/api/graph?path=${encodeURIComponent(config.file)}`).then((opened) => {
     if (opened.http !== 200) return setNotice(opened.error);
@@ -145,11 +152,14 @@ export default function Studio({ config }) {
     const tracePath = `${stem}.live.jsonl`;
     ws.onmessage = (event) => {
       const message = JSON.parse(event.data);
+      if (message.type === "start") view.current = startView(message.run);
+      if (message.type === "frame" && view.current) view.current = withFrame(view.current, message, pinnedNow.current);
+      const shown = view.current;
       setLive((current) => {
         const base = current || { ...NO_LIVE, reportPath, tracePath };
         if (message.type === "start") {
           const outputs = Object.fromEntries(Object.entries(message.run.outputs).map(([key, changes]) => [key, changes.at(-1)[1]]));
-          return { ...NO_LIVE, reportPath, tracePath, speed: base.speed, outputs, limit: message.limit };
+          return { ...NO_LIVE, reportPath, tracePath, speed: base.speed, outputs, limit: message.limit, view: shown };
         }
         if (message.type === "error") return { ...base, notice: message.message };
         if (message.type === "saved") return { ...base, notice: `saved ${message.path}` };
@@ -157,7 +167,7 @@ export default function Studio({ config }) {
         Object.entries(message.grippers).forEach(([path, fields]) => { grippers[path] = { ...grippers[path], ...fields }; });
         return { ...base, outputs: { ...base.outputs, ...message.outputs }, computed: new Set(message.computed), grippers,
                  tick: message.tick, time: message.time, playing: message.playing, speed: message.speed,
-                 ended: message.ended, log: [...base.log, ...message.log].slice(-MAX_LOG) };
+                 ended: message.ended, log: [...base.log, ...message.log].slice(-MAX_LOG), view: shown };
       });
     };
     ws.onclose = () => setLive((current) => current && { ...current, notice: "live run closed" });
@@ -180,7 +190,8 @@ export default function Studio({ config }) {
   useEffect(() => () => socket.current && socket.current.close(), []);
 
   useEffect(() => {   // what a browser test drives and reads
-    window.graphflowStudio = { file, problems, live, connect, save, startLive, send };
+    window.graphflowStudio = { file, problems, live, connect, save, startLive, send,
+      bodyPosition: (path) => scene.current?.bodies[path]?.group.position.toArray() ?? null };
     document.body.dataset.studio = file ? "ready" : "loading";
   }, [file, problems, live, connect, save, startLive, send]);
 
@@ -229,6 +240,8 @@ export default function Studio({ config }) {
         <aside className="gf-side">
           {graphProblems.map((problem, index) => <div key={index} className="gf-problem">{problem.message}</div>)}
           {node && <Inspector key={node.name} node={node} type={typesById[node.type]} problems={problems}
+                              live={live} pinned={pinned}
+                              onPin={(key) => setPinned((list) => (list.includes(key) ? list : [...list, key]))}
                               onRename={(name) => { edit((data) => renamed(data, node.name, name)); setSelected(name); }}
                               onDelete={() => { edit((data) => deleted(data, node.name)); setSelected(null); }}
                               onInput={(port, value) => edit((data) => {
@@ -239,6 +252,8 @@ export default function Studio({ config }) {
           {live && <LivePanel live={live} send={send} />}
         </aside>
       </div>
+      {live && live.view && <LiveScene view={live.view} pinned={pinned} onReady={(built) => { scene.current = built; }}
+                                       onUnpin={(key) => setPinned((list) => list.filter((item) => item !== key))} />}
     </div>
   );
 }

@@ -1,0 +1,17 @@
+// The live run's 3D scene and lanes: the report's SceneView and Lanes fed from the live frames.
+import React, { useMemo } from "react";
+import SceneView from "../SceneView.jsx";
+import Lanes from "../Lanes.jsx";
+import { heldNow } from "./liveView.js";
+
+export default function LiveScene({ view, pinned, onUnpin, onReady }) {
+  const held = useMemo(() => heldNow(view), [view]);
+  return (
+    <div className="gf-live-scene" data-testid="live-scene" data-tick={view.ticks}>
+      <SceneView run={view} tick={view.ticks} held={held} onReady={onReady} />
+      <div className="gf-live-lanes">
+        <Lanes run={view} tick={view.ticks} pinned={pinned} onTick={() => {}} onUnpin={onUnpin} />
+      </div>
+    </div>
+  );
+}

@@ -1,0 +1,56 @@
+"""The studio's live run in headless Chromium: the report's 3D scene and lanes, fed from the live frames."""
+import re
+import shutil
+
+import pytest
+from report.browser import browser
+
+from graphflow.observe.trace import read_trace
+
+from .conftest import GRAPHS, Studio
+from .test_browser import open_studio
+
+CUBE = "/World/Cube"
+GRIPPER = "/World/ur10/ee_link/SurfaceGripper"
+
+
+@pytest.fixture
+def pick_place(tmp_path):
+    shutil.copy(GRAPHS / "ur10_pick_place.json", tmp_path / "ur10_pick_place.json")
+    server = Studio(tmp_path, "ur10_pick_place.json")
+    yield server
+    server.stop()
+
+
+def cube_position(page):
+    return page.evaluate(f"window.graphflowStudio.bodyPosition({CUBE!r})")
+
+
+def test_a_live_run_moves_the_cube_in_the_scene_and_draws_the_gripper_lanes(pick_place):
+    with browser() as chromium:
+        page = open_studio(chromium, pick_place)
+        page.click("[data-action=live]")
+        page.wait_for_selector("[data-testid=live-scene] canvas")
+        page.wait_for_function(f"window.graphflowStudio.bodyPosition({CUBE!r}) !== null")
+        start = cube_position(page)
+        page.select_option("[data-field=speed]", "null")
+        page.click("[data-action=play]")
+        # lifted 5 cm off the table in the rendered scene: the gripper picked it up
+        page.wait_for_function(f"window.graphflowStudio.bodyPosition({CUBE!r})[2] > {start[2] + 0.05}", timeout=180000)
+        page.click("[data-action=pause]")
+        page.wait_for_selector("[data-testid=live-bar][data-playing=false]")
+        tick = int(page.get_attribute("[data-testid=live-bar]", "data-tick"))
+        page.wait_for_selector(f"[data-testid=live-scene][data-tick='{tick}']")
+        shown = cube_position(page)
+        status_titles = page.locator(f"[data-testid='status:{GRIPPER}'] title").all_text_contents()
+        page.click("[data-action=save-trace]")
+        page.wait_for_function("document.querySelector('[data-testid=live-notice]')?.innerText.startsWith('saved')")
+        assert not page.errors, page.errors
+    trace = read_trace(pick_place.folder / "ur10_pick_place.live.jsonl")
+    samples = [record["poses"][CUBE] for record in trace.ticks if CUBE in record.get("poses", {}) and record["tick"] <= tick]
+    assert shown == pytest.approx(samples[-1][:3], abs=1e-5)   # the scene shows the run's own last pose sample
+    closed_tick = next(record["tick"] for record in trace.ticks
+                       if record.get("grippers", {}).get(GRIPPER, {}).get("status") == "Closed")
+    closed_spans = [title for title in status_titles if title.startswith(f"{GRIPPER.split('/')[-1]} status: Closed")]
+    assert closed_spans, status_titles
+    assert re.search(rf"\(ticks {closed_tick}–", closed_spans[0]), (closed_spans, closed_tick)
