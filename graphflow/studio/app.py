@@ -123,6 +123,16 @@ def build_app(session: Session, hosts: set[str]) -> Guard:
         return JSONResponse({"path": session.folder.relative(path), "layout": editing.drawn_layout(opened["data"], path),
                              **opened})
 
+    async def forms(request: Request):
+        return JSONResponse(editing.document_forms())
+
+    async def prims(request: Request):
+        from graphflow.studio.stage_prims import stage_prims
+
+        path = session.folder.resolve(request.query_params.get("path", ""))
+        return JSONResponse(await asyncio.to_thread(stage_prims, request.query_params.get("stage", ""), path,
+                                                    session.folder.root))
+
     async def watched(request: Request):
         return JSONResponse(editing.watched_revision(session.folder.resolve(request.query_params.get("path", ""))))
 
@@ -161,7 +171,7 @@ def build_app(session: Session, hosts: set[str]) -> Guard:
         await stream_live(websocket, path, session.folder)
 
     routes = [Route("/", page), WebSocketRoute("/api/live", live), Route("/api/info", info), Route("/api/palette", palette),
-              Route("/api/graph", open_graph), Route("/api/revision", watched), Route("/api/check", check, methods=["POST"]),
+              Route("/api/graph", open_graph), Route("/api/forms", forms), Route("/api/prims", prims), Route("/api/revision", watched), Route("/api/check", check, methods=["POST"]),
               Route("/api/save", save, methods=["POST"])]
     app = Starlette(routes=routes, exception_handlers={BadInput: bad_input, 404: not_found, 405: wrong_method})
     return Guard(app, token=session.token, hosts=hosts)

@@ -11,6 +11,7 @@ from __future__ import annotations
 import difflib
 import hashlib
 import json
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -19,6 +20,7 @@ from graphflow.errors import BadInput
 from graphflow.files import FileProblem, loads_strict, read_text, write_text
 from graphflow.model import GraphError, Problem
 from graphflow.registry import default_registry
+from graphflow.studio.stage_prims import CHECK_FIELD_KINDS, port_kind
 from graphflow.types import can_connect, parse_type
 
 
@@ -27,9 +29,11 @@ def revision(text: str | None) -> str | None:
     return None if text is None else hashlib.sha256(text.encode("utf-8")).hexdigest()[:16]
 
 
-def _port(attribute) -> dict:
+def _port(attribute, prim_kind: str | None = None) -> dict:
     entry = {"name": attribute.name, "type": attribute.type, "description": attribute.description,
              "execution": attribute.is_execution, "optional": attribute.optional}
+    if prim_kind is not None:
+        entry["primKind"] = prim_kind   # the kind of stage prim it names: the page offers those in a picker
     if attribute.default is not None:
         entry["default"] = json.loads(json.dumps(attribute.default))
     for key, value in (("tokens", list(attribute.allowed_tokens)), ("minimum", attribute.minimum),
@@ -52,7 +56,8 @@ def palette() -> dict:
         spec = node_type.spec
         types.append({"id": spec.id, "version": spec.version, "uiName": spec.ui_name or spec.id.rsplit(".", 1)[-1],
                       "categories": list(spec.categories), "description": spec.description,
-                      "inputs": [_port(a) for a in spec.inputs], "outputs": [_port(a) for a in spec.outputs]})
+                      "inputs": [_port(a, port_kind(spec.id, a)) for a in spec.inputs],
+                      "outputs": [_port(a) for a in spec.outputs]})
     names = sorted({port["type"] for entry in types for group in ("inputs", "outputs") for port in entry[group]})
     parsed = {name: parse_type(name) for name in names}
     connects = {source: [destination for destination in names if can_connect(parsed[source], parsed[destination])]
@@ -60,12 +65,31 @@ def palette() -> dict:
     return {"types": types, "connects": connects}
 
 
+def document_forms() -> dict:
+    """What the variables, checks and settings editors draw their fields from: the graph format's own schema."""
+    from graphflow.document import json_schema
+
+    properties = json_schema()["properties"]
+    checks = {rule["if"]["properties"]["check"]["const"]: rule["then"]
+              for rule in properties["checks"]["items"]["allOf"]}
+    return {"settings": properties["settings"]["properties"], "seed": properties["scenario"]["properties"]["seed"],
+            "variables": properties["variables"]["items"]["properties"], "checks": checks,
+            "checkPrimKinds": CHECK_FIELD_KINDS}
+
+
+CHECK_NUMBER = re.compile(r"checks\[(\d+)\]")
+
+
 def problem_json(problem: Problem) -> dict:
     """A problem as the page marks it: on its node and attribute when it names them."""
     text = str(problem)
     prefix = f"{problem.file}: "
-    return {"message": text[len(prefix):] if text.startswith(prefix) else text, "node": problem.node,
-            "attribute": problem.attribute, "kind": problem.kind, "path": list(problem.path)}
+    message = text[len(prefix):] if text.startswith(prefix) else text
+    path = list(problem.path)
+    numbered = CHECK_NUMBER.match(message)
+    if not path and numbered:   # a stage problem of a check says "checks[N]", counted from 1
+        path = ["checks", int(numbered.group(1)) - 1]
+    return {"message": message, "node": problem.node, "attribute": problem.attribute, "kind": problem.kind, "path": path}
 
 
 def check(data, path: Path) -> tuple[list[Problem], GraphDocument | None]:

@@ -2,6 +2,7 @@
 // (tokens as menus, numbers with the spec's range, booleans as boxes, anything else as JSON).
 import React, { useState } from "react";
 import { shortValue } from "../data.js";
+import PrimPicker from "./PrimPicker.jsx";
 
 function parsedValue(port, text) {
   if (port.tokens) return text;
@@ -69,7 +70,7 @@ function LiveOutputs({ node, type, live, pinned, onPin }) {
   );
 }
 
-export default function Inspector({ node, type, problems, onRename, onDelete, onInput, live, pinned, onPin }) {
+export default function Inspector({ node, type, problems, onRename, onDelete, onInput, live, pinned, onPin, stagePrims }) {
   const [name, setName] = useState(node.name);
   const mine = problems.filter((problem) => problem.node === node.name);
   const authored = node.inputs || {};
@@ -81,13 +82,20 @@ export default function Inspector({ node, type, problems, onRename, onDelete, on
                          onBlur={() => name !== node.name && onRename(name)}
                          onKeyDown={(event) => event.key === "Enter" && name !== node.name && onRename(name)} /></label>
       <button type="button" data-action="delete" onClick={onDelete}>delete node</button>
-      {mine.map((problem, index) => <div key={index} className="gf-problem">{problem.message}</div>)}
+      {mine.filter((problem) => !(type && type.inputs.some((port) => !port.execution && problem.attribute === `inputs:${port.name}`)))
+        .map((problem, index) => <div key={index} className="gf-problem">{problem.message}</div>)}
       <table>
         <tbody>
           {(type ? type.inputs.filter((port) => !port.execution) : []).map((port) => (
             <tr key={`${node.name}-${port.name}`} title={`${port.type}: ${port.description}`}>
               <th>{port.name}</th>
-              <td><InputWidget port={port} value={authored[port.name]} onChange={(value) => onInput(port.name, value)} /></td>
+              <td>{port.primKind
+                ? <PrimPicker name={port.name} value={authored[port.name]} kind={port.primKind} stagePrims={stagePrims}
+                              many={port.type.endsWith("[]") || Array.isArray(authored[port.name])}
+                              onChange={(value) => onInput(port.name, value)} />
+                : <InputWidget port={port} value={authored[port.name]} onChange={(value) => onInput(port.name, value)} />}
+                {mine.filter((problem) => problem.attribute === `inputs:${port.name}`).map((problem, index) => (
+                  <div key={index} className="gf-problem" data-port-problem={port.name}>{problem.message}</div>))}</td>
             </tr>
           ))}
         </tbody>

@@ -8,6 +8,10 @@ import StudioGraph from "./StudioGraph.jsx";
 import { LiveBar, LivePanel } from "./Live.jsx";
 import LiveScene from "./LiveScene.jsx";
 import { startView, withFrame } from "./liveView.js";
+import { ChecksEditor, SettingsEditor, VariablesEditor, problemsAt } from "./DocumentEditors.jsx";
+
+const TABS = ["node", "variables", "checks", "settings"];
+const SECTIONS = { variables: ["variables"], checks: ["checks"], settings: ["settings", "scenario"] };
 import "./studio.css";
 
 const NO_LIVE = { outputs: {}, computed: new Set(), grippers: {}, log: [], tick: 0, time: 0, playing: false, speed: 1 };
@@ -32,6 +36,9 @@ function startPositions(graph, layout) {
 
 export default function Studio({ config }) {
   const [palette, setPalette] = useState(null);
+  const [forms, setForms] = useState(null);
+  const [tab, setTab] = useState("node");
+  const [stagePrims, setStagePrims] = useState(null);   // {stage, prims} or {stage, error}
   const [file, setFile] = useState(null);           // {path, data, revision}
   const [problems, setProblems] = useState([]);
   const [positions, setPositions] = useState({});
@@ -59,6 +66,7 @@ export default function Studio({ config }) {
 
   useEffect(() => {
     call(config, "GET", "/api/palette").then(setPalette);
+    call(config, "GET", "/api/forms").then(setForms);
     if (config.file) load();
   }, [config, load]);
 
@@ -78,6 +86,16 @@ export default function Studio({ config }) {
     }, 1000);
     return () => clearInterval(timer);
   }, [config, file, dirty, load]);
+
+  const stage = file && file.data && file.data.settings ? file.data.settings.stage : undefined;
+  useEffect(() => {   // the stage's prims, for the target pickers: read again when settings.stage changes
+    if (!file || typeof stage !== "string" || !stage) return setStagePrims(null);
+    let current = true;
+    call(config, "GET", `/api/prims?path=${encodeURIComponent(file.path)}&stage=${encodeURIComponent(stage)}`).then((answer) => {
+      if (current) setStagePrims(answer.http === 200 ? answer : { stage, error: answer.error });
+    });
+    return () => { current = false; };
+  }, [config, file && file.path, stage]);
 
   const typesById = useMemo(() => Object.fromEntries((palette ? palette.types : []).map((type) => [type.id, type])), [palette]);
 
@@ -195,9 +213,11 @@ export default function Studio({ config }) {
     document.body.dataset.studio = file ? "ready" : "loading";
   }, [file, problems, live, connect, save, startLive, send]);
 
-  if (!palette || !file) return <div className="gf-studio" data-testid="studio">{notice || "loading…"}</div>;
+  if (!palette || !forms || !file) return <div className="gf-studio" data-testid="studio">{notice || "loading…"}</div>;
   const node = file.data.nodes.find((entry) => entry.name === selected);
-  const graphProblems = problems.filter((problem) => !problem.node);
+  const placed = (problem) => Object.values(SECTIONS).flat().some((section) => problemsAt([problem], section).length);
+  const graphProblems = problems.filter((problem) => !problem.node && !placed(problem));
+  const tabProblems = (name) => (SECTIONS[name] || []).reduce((count, section) => count + problemsAt(problems, section).length, 0);
   return (
     <div className="gf-studio" data-testid="studio">
       <header className="gf-studio-bar">
@@ -222,7 +242,7 @@ export default function Studio({ config }) {
       <div className="gf-studio-main">
         <Palette types={palette.types} onAdd={addNode} />
         <StudioGraph graph={file.data} typesById={typesById} problems={problems} positions={positions}
-                     live={live || NO_LIVE} selected={selected} onSelect={setSelected}
+                     live={live || NO_LIVE} selected={selected} onSelect={(name) => { setSelected(name); if (name) setTab("node"); }}
                      onNodesChange={(changes) => setPositions((now) => {
                        const next = { ...now };
                        changes.forEach((change) => { if (change.type === "position" && change.position) next[change.id] = change.position; });
@@ -239,8 +259,17 @@ export default function Studio({ config }) {
                      })} />
         <aside className="gf-side">
           {graphProblems.map((problem, index) => <div key={index} className="gf-problem">{problem.message}</div>)}
-          {node && <Inspector key={node.name} node={node} type={typesById[node.type]} problems={problems}
-                              live={live} pinned={pinned}
+          <nav className="gf-tabs" data-testid="tabs">
+            {TABS.map((name) => (
+              <button type="button" key={name} data-tab={name} className={tab === name ? "gf-on" : ""} onClick={() => setTab(name)}>
+                {name}{tabProblems(name) ? ` (${tabProblems(name)})` : ""}</button>))}
+          </nav>
+          {tab === "variables" && <VariablesEditor data={file.data} types={Object.keys(palette.connects)} problems={problems} edit={edit} />}
+          {tab === "checks" && <ChecksEditor data={file.data} forms={forms} problems={problems} stagePrims={stagePrims} edit={edit} />}
+          {tab === "settings" && <SettingsEditor data={file.data} forms={forms} problems={problems} edit={edit} />}
+          {tab === "node" && !node && <p className="gf-description">select a node to edit it</p>}
+          {tab === "node" && node && <Inspector key={node.name} node={node} type={typesById[node.type]} problems={problems}
+                              live={live} pinned={pinned} stagePrims={stagePrims}
                               onPin={(key) => setPinned((list) => (list.includes(key) ? list : [...list, key]))}
                               onRename={(name) => { edit((data) => renamed(data, node.name, name)); setSelected(name); }}
                               onDelete={() => { edit((data) => deleted(data, node.name)); setSelected(null); }}
