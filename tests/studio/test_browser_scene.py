@@ -12,6 +12,17 @@ from .test_browser import open_studio
 
 CUBE = "/World/Cube"
 GRIPPER = "/World/ur10/ee_link/SurfaceGripper"
+PINNED = "pick_place.event"
+
+
+def value_at(trace, key, tick):
+    """An output's value at a tick: its last change at or before it (tick 0: the header's value)."""
+    value = trace.header["outputs"][key]
+    for record in trace.ticks:
+        if record["tick"] > tick:
+            break
+        value = record.get("outputs", {}).get(key, value)
+    return value
 
 
 @pytest.fixture
@@ -33,6 +44,8 @@ def test_a_live_run_moves_the_cube_in_the_scene_and_draws_the_gripper_lanes(pick
         page.wait_for_selector("[data-testid=live-scene] canvas")
         page.wait_for_function(f"window.graphflowStudio.bodyPosition({CUBE!r}) !== null")
         start = cube_position(page)
+        page.click(".react-flow__node[data-id='pick_place']")
+        page.click(f"[data-pin='{PINNED}']")   # the controller's phase index, plotted in a lane as it runs
         page.select_option("[data-field=speed]", "null")
         page.click("[data-action=play]")
         # lifted 5 cm off the table in the rendered scene: the gripper picked it up
@@ -42,6 +55,8 @@ def test_a_live_run_moves_the_cube_in_the_scene_and_draws_the_gripper_lanes(pick
         tick = int(page.get_attribute("[data-testid=live-bar]", "data-tick"))
         page.wait_for_selector(f"[data-testid=live-scene][data-tick='{tick}']")
         shown = cube_position(page)
+        pinned = page.evaluate(f"window.graphflowStudio.live.view.outputs[{PINNED!r}]")
+        assert PINNED in page.inner_text("[data-testid=lanes]")
         status_titles = page.locator(f"[data-testid='status:{GRIPPER}'] title").all_text_contents()
         page.click("[data-action=save-trace]")
         page.wait_for_function("document.querySelector('[data-testid=live-notice]')?.innerText.startsWith('saved')")
@@ -49,6 +64,8 @@ def test_a_live_run_moves_the_cube_in_the_scene_and_draws_the_gripper_lanes(pick
     trace = read_trace(pick_place.folder / "ur10_pick_place.live.jsonl")
     samples = [record["poses"][CUBE] for record in trace.ticks if CUBE in record.get("poses", {}) and record["tick"] <= tick]
     assert shown == pytest.approx(samples[-1][:3], abs=1e-5)   # the scene shows the run's own last pose sample
+    assert len({value for _tick, value in pinned}) > 1, pinned   # the phase changed while it ran
+    assert all(value == value_at(trace, PINNED, at) for at, value in pinned), pinned
     closed_tick = next(record["tick"] for record in trace.ticks
                        if record.get("grippers", {}).get(GRIPPER, {}).get("status") == "Closed")
     closed_spans = [title for title in status_titles if title.startswith(f"{GRIPPER.split('/')[-1]} status: Closed")]

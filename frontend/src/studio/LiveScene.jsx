@@ -4,7 +4,8 @@ import SceneView from "../SceneView.jsx";
 import Lanes from "../Lanes.jsx";
 import { heldNow } from "./liveView.js";
 
-export default function LiveScene({ view, pinned, onUnpin, onReady }) {
+// memo: the page redraws on every frame (wire values); the scene and lanes only when their view changes
+export default React.memo(function LiveScene({ view, pinned, onUnpin, onReady }) {
   const held = useMemo(() => heldNow(view), [view]);
   return (
     <div className="gf-live-scene" data-testid="live-scene" data-tick={view.ticks}>
@@ -14,4 +15,4 @@ export default function LiveScene({ view, pinned, onUnpin, onReady }) {
       </div>
     </div>
   );
-}
+});

@@ -16,6 +16,7 @@ import "./studio.css";
 
 const NO_LIVE = { outputs: {}, computed: new Set(), grippers: {}, log: [], tick: 0, time: 0, playing: false, speed: 1 };
 const MAX_LOG = 300;
+const SCENE_MS = 100;   // while a run plays, the 3D scene and lanes redraw at most 10 times a second (software WebGL is costly)
 
 function portType(typesById, graph, nodeName, group, port) {
   const node = graph.nodes.find((entry) => entry.name === nodeName);
@@ -55,6 +56,9 @@ export default function Studio({ config }) {
   pinnedNow.current = pinned;
   const view = useRef(null);                  // the live run as the scene and lanes read it (liveView.js)
   const scene = useRef(null);
+  const sceneShownAt = useRef(0);
+  const sceneReady = useCallback((built) => { scene.current = built; }, []);
+  const unpin = useCallback((key) => setPinned((list) => list.filter((item) => item !== key)), []);
 
   const load = useCallback(() => call(config, "GET", `/api/graph?path=${encodeURIComponent(config.file)}`).then((opened) => {
     if (opened.http !== 200) return setNotice(opened.error);
@@ -172,12 +176,14 @@ export default function Studio({ config }) {
       const message = JSON.parse(event.data);
       if (message.type === "start") view.current = startView(message.run);
       if (message.type === "frame" && view.current) view.current = withFrame(view.current, message, pinnedNow.current);
-      const shown = view.current;
+      const now = performance.now();
+      const redraw = message.type !== "frame" || !message.playing || now - sceneShownAt.current >= SCENE_MS;
+      if (redraw) sceneShownAt.current = now;
       setLive((current) => {
         const base = current || { ...NO_LIVE, reportPath, tracePath };
         if (message.type === "start") {
           const outputs = Object.fromEntries(Object.entries(message.run.outputs).map(([key, changes]) => [key, changes.at(-1)[1]]));
-          return { ...NO_LIVE, reportPath, tracePath, speed: base.speed, outputs, limit: message.limit, view: shown };
+          return { ...NO_LIVE, reportPath, tracePath, speed: base.speed, outputs, limit: message.limit, view: view.current };
         }
         if (message.type === "error") return { ...base, notice: message.message };
         if (message.type === "saved") return { ...base, notice: `saved ${message.path}` };
@@ -185,7 +191,8 @@ export default function Studio({ config }) {
         Object.entries(message.grippers).forEach(([path, fields]) => { grippers[path] = { ...grippers[path], ...fields }; });
         return { ...base, outputs: { ...base.outputs, ...message.outputs }, computed: new Set(message.computed), grippers,
                  tick: message.tick, time: message.time, playing: message.playing, speed: message.speed,
-                 ended: message.ended, log: [...base.log, ...message.log].slice(-MAX_LOG), view: shown };
+                 ended: message.ended, log: [...base.log, ...message.log].slice(-MAX_LOG),
+                 view: redraw ? view.current : base.view };
       });
     };
     ws.onclose = () => setLive((current) => current && { ...current, notice: "live run closed" });
@@ -281,8 +288,7 @@ export default function Studio({ config }) {
           {live && <LivePanel live={live} send={send} />}
         </aside>
       </div>
-      {live && live.view && <LiveScene view={live.view} pinned={pinned} onReady={(built) => { scene.current = built; }}
-                                       onUnpin={(key) => setPinned((list) => list.filter((item) => item !== key))} />}
+      {live && live.view && <LiveScene view={live.view} pinned={pinned} onReady={sceneReady} onUnpin={unpin} />}
     </div>
   );
 }
