@@ -61,7 +61,7 @@ function LiveOutputs({ node, type, live, pinned, onPin }) {
               <th>{port.name}</th>
               <td data-output={key}>{shortValue(live.outputs[key])}</td>
               <td><button type="button" data-pin={key} disabled={pinned.includes(key)} title="plot it in the lanes"
-                          onClick={() => onPin(key)}>📌</button></td>
+                          onClick={() => onPin(key)}>pin</button></td>
             </tr>
           );
         })}
