@@ -1,0 +1,64 @@
+"""The scene and lanes part of the live frames (graphflow/studio/frame_scene.py), read over the websocket."""
+import json
+import shutil
+
+import pytest
+
+from graphflow.observe.trace import read_trace
+
+from .conftest import GRAPHS, Studio
+
+websockets_sync = pytest.importorskip("websockets.sync.client")
+
+CUBE = "/World/Cube"
+GRIPPER = "/World/ur10/ee_link/SurfaceGripper"
+PHASE = "pick_place.eventName"
+
+
+@pytest.fixture
+def pick_place(tmp_path):
+    shutil.copy(GRAPHS / "ur10_pick_place.json", tmp_path / "pick.json")
+    server = Studio(tmp_path, "pick.json")
+    yield server
+    server.stop()
+
+
+def frames_until(socket, tick):
+    """Every frame of a run played at max speed until one reaches *tick*; then paused, the trace saved."""
+    frames = []
+    socket.send(json.dumps({"command": "speed", "value": None}))
+    socket.send(json.dumps({"command": "play"}))
+    while not frames or frames[-1]["tick"] < tick:
+        message = json.loads(socket.recv(timeout=120))
+        assert message["type"] != "error", message
+        if message["type"] == "frame":
+            frames.append(message)
+    socket.send(json.dumps({"command": "pause"}))
+    socket.send(json.dumps({"command": "saveTrace", "path": "live.jsonl"}))
+    while json.loads(socket.recv(timeout=120))["type"] != "saved":
+        pass
+    return frames
+
+
+def test_the_frames_carry_every_phase_and_gripper_change_and_the_bodies_last_poses(pick_place):
+    url = f"ws://127.0.0.1:{pick_place.port}/api/live?path=pick.json&token={pick_place.token}"
+    with websockets_sync.connect(url, open_timeout=30) as socket:
+        frames = frames_until(socket, 900)
+    trace = read_trace(pick_place.folder / "live.jsonl")
+    last = frames[-1]["tick"]
+    assert len(frames) < last / 2   # frames merged several ticks each: what each carries is what those ticks did
+    records = [record for record in trace.ticks if record["tick"] <= last]
+    phases = [change for frame in frames for change in frame["lanes"]["phases"].get(PHASE, [])]
+    assert phases == [[r["tick"], r["outputs"][PHASE]] for r in records if PHASE in r.get("outputs", {})]
+    statuses = [change for frame in frames for change in frame["lanes"]["grippers"].get(GRIPPER, {}).get("status", [])]
+    assert statuses == [[r["tick"], r["grippers"][GRIPPER]["status"]] for r in records
+                        if "status" in r.get("grippers", {}).get(GRIPPER, {})]
+    assert [value for _tick, value in statuses][-1] == "Closed" and len(phases) >= 4   # the run got to the carry
+    samples = {r["tick"]: r["poses"][CUBE] for r in records if CUBE in r.get("poses", {})}
+    for frame in frames:
+        sent = frame["scene"]["poses"].get(CUBE)
+        if sent is not None:
+            assert sent[1] == pytest.approx(samples[sent[0]], abs=1e-5)
+            assert sent[0] == max(tick for tick in samples if tick <= frame["tick"])   # the frame's last sample
+    closes = [close for frame in frames for close in frame["scene"]["rays"]]
+    assert [close["gripper"] for close in closes] == [GRIPPER] and closes[0]["rays"]
