@@ -133,6 +133,12 @@ def build_app(session: Session, hosts: set[str]) -> Guard:
         return JSONResponse(await asyncio.to_thread(stage_prims, request.query_params.get("stage", ""), path,
                                                     session.folder.root))
 
+    async def stages(request: Request):
+        from graphflow.studio.stage_prims import stage_choices
+
+        path = session.folder.resolve(request.query_params.get("path", ""))
+        return JSONResponse({"stages": await asyncio.to_thread(stage_choices, path, session.folder.root)})
+
     async def watched(request: Request):
         return JSONResponse(editing.watched_revision(session.folder.resolve(request.query_params.get("path", ""))))
 
@@ -171,7 +177,8 @@ def build_app(session: Session, hosts: set[str]) -> Guard:
         await stream_live(websocket, path, session.folder)
 
     routes = [Route("/", page), WebSocketRoute("/api/live", live), Route("/api/info", info), Route("/api/palette", palette),
-              Route("/api/graph", open_graph), Route("/api/forms", forms), Route("/api/prims", prims), Route("/api/revision", watched), Route("/api/check", check, methods=["POST"]),
+              Route("/api/graph", open_graph), Route("/api/forms", forms), Route("/api/prims", prims),
+              Route("/api/stages", stages), Route("/api/revision", watched), Route("/api/check", check, methods=["POST"]),
               Route("/api/save", save, methods=["POST"])]
     app = Starlette(routes=routes, exception_handlers={BadInput: bad_input, 404: not_found, 405: wrong_method})
     return Guard(app, token=session.token, hosts=hosts)

@@ -70,3 +70,27 @@ def stage_prims(reference: str, graph: Path, root: Path) -> dict:
                                           (XFORM, prim.IsA(UsdGeom.Xformable))) if holds]
         prims.append({"path": name, "type": type_name, "kinds": kinds})
     return {"stage": reference, "prims": prims}
+
+
+STAGE_SUFFIXES = (".usd", ".usda", ".usdc")
+
+
+def stage_choices(graph: Path, root: Path, limit: int = 500) -> list[str]:
+    """What ``settings.stage`` may name, for the settings editor: packaged assets, then stage files under the folder.
+
+    Files are given relative to the graph's own folder, as ``settings.stage`` takes them.
+    """
+    import os
+
+    from graphflow.usd.resolver import ASSET_DIRECTORY
+
+    choices = [f"asset:{path.name}" for path in sorted(ASSET_DIRECTORY.iterdir()) if path.suffix in STAGE_SUFFIXES]
+    for path in sorted(root.rglob("*")):
+        parts = path.relative_to(root).parts
+        if path.suffix in STAGE_SUFFIXES and not any(part.startswith(".") for part in parts) and path.is_file():
+            resolved = path.resolve()
+            if resolved == root or root in resolved.parents:   # no symbolic link out of the folder
+                choices.append(Path(os.path.relpath(path, graph.parent)).as_posix())
+        if len(choices) >= limit:
+            break
+    return choices

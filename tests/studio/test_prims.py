@@ -68,3 +68,12 @@ def test_a_problem_of_a_variable_or_setting_names_where_it_is(studio, broken, wh
     problem = checked["problems"][0]
     placed = problem["path"][:2] == where or (problem["kind"] == "variable" and problem["attribute"] == "speed")
     assert placed, json.dumps(checked)
+
+
+def test_the_stages_offered_are_the_packaged_assets_and_the_folders_own(studio, studio_folder):
+    (studio_folder / "scenes").mkdir()
+    (studio_folder / "scenes" / "table.usda").write_text('#usda 1.0\ndef Xform "Table" {}\n')
+    status, answer = studio.request("GET", "/api/stages?path=counter.json")
+    assert status == 200
+    assert "asset:ur10_pick_place.usda" in answer["stages"] and "scenes/table.usda" in answer["stages"]
+    assert all(stage.startswith("asset:") or not stage.startswith(("/", "..")) for stage in answer["stages"])

@@ -35,7 +35,7 @@ export function parsed(text, schema = {}) {
   }
 }
 
-function Field({ name, schema, value, onChange, testid }) {
+function Field({ name, schema, value, onChange, testid, list }) {
   const [draft, setDraft] = useState(textOf(value));
   useEffect(() => setDraft(textOf(value)), [value]);
   if (schema.enum) {
@@ -47,7 +47,7 @@ function Field({ name, schema, value, onChange, testid }) {
     );
   }
   const commit = () => draft !== textOf(value) && onChange(parsed(draft, schema));
-  return <input type="text" data-field={testid} value={draft} title={schema.description || ""}
+  return <input type="text" data-field={testid} value={draft} title={schema.description || ""} list={list}
                 placeholder={schema.type === "number" || schema.type === "integer" ? "a number" : ""}
                 onChange={(event) => setDraft(event.target.value)} onBlur={commit}
                 onKeyDown={(event) => event.key === "Enter" && commit()} />;
@@ -152,7 +152,7 @@ export function ChecksEditor({ data, forms, problems, stagePrims, edit }) {
   );
 }
 
-export function SettingsEditor({ data, forms, problems, edit }) {
+export function SettingsEditor({ data, forms, problems, stages, edit }) {
   const settings = data.settings || {};
   const change = (key, value) => edit((doc) => {
     doc.settings = withKey(doc.settings || {}, key, value);
@@ -163,9 +163,11 @@ export function SettingsEditor({ data, forms, problems, edit }) {
   const step = settings.timeStep;
   return (
     <section className="gf-doc-editor" data-testid="settings-editor">
+      <datalist id="gf-stages">{(stages || []).map((stage) => <option key={stage} value={stage} />)}</datalist>
       {Object.entries(forms.settings).filter(([key]) => key !== "missingAssets").map(([key, schema]) => (
         <div key={key} className="gf-doc-item" data-setting={key}>
           <label title={schema.description || ""}>{key} <Field name={key} schema={schema} value={settings[key]} testid={`setting-${key}`}
+                                                               list={key === "stage" ? "gf-stages" : undefined}
                                                                onChange={(value) => change(key, value)} /></label>
           {key === "timeStep" && typeof step === "number" && step > 0 && <small> physics rate {(1 / step).toFixed(1)} Hz</small>}
           <Problems list={problemsAt(problems, "settings", key)} testid={`setting-${key}`} />

@@ -40,6 +40,7 @@ export default function Studio({ config }) {
   const [forms, setForms] = useState(null);
   const [tab, setTab] = useState("node");
   const [stagePrims, setStagePrims] = useState(null);   // {stage, prims} or {stage, error}
+  const [stages, setStages] = useState([]);             // what settings.stage may name (packaged assets, the folder's stages)
   const [file, setFile] = useState(null);           // {path, data, revision}
   const [problems, setProblems] = useState([]);
   const [positions, setPositions] = useState({});
@@ -100,6 +101,11 @@ export default function Studio({ config }) {
     });
     return () => { current = false; };
   }, [config, file && file.path, stage]);
+
+  const opened = file && file.path;
+  useEffect(() => {
+    if (opened) call(config, "GET", `/api/stages?path=${encodeURIComponent(opened)}`).then((answer) => setStages(answer.stages || []));
+  }, [config, opened]);
 
   const typesById = useMemo(() => Object.fromEntries((palette ? palette.types : []).map((type) => [type.id, type])), [palette]);
 
@@ -273,7 +279,7 @@ export default function Studio({ config }) {
           </nav>
           {tab === "variables" && <VariablesEditor data={file.data} types={Object.keys(palette.connects)} problems={problems} edit={edit} />}
           {tab === "checks" && <ChecksEditor data={file.data} forms={forms} problems={problems} stagePrims={stagePrims} edit={edit} />}
-          {tab === "settings" && <SettingsEditor data={file.data} forms={forms} problems={problems} edit={edit} />}
+          {tab === "settings" && <SettingsEditor data={file.data} forms={forms} problems={problems} stages={stages} edit={edit} />}
           {tab === "node" && !node && <p className="gf-description">select a node to edit it</p>}
           {tab === "node" && node && <Inspector key={node.name} node={node} type={typesById[node.type]} problems={problems}
                               live={live} pinned={pinned} stagePrims={stagePrims}
