@@ -7,7 +7,7 @@ import Inspector from "./Inspector.jsx";
 import StudioGraph from "./StudioGraph.jsx";
 import { LiveBar, LivePanel } from "./Live.jsx";
 import LiveScene from "./LiveScene.jsx";
-import { startView, withFrame } from "./liveView.js";
+import { startView, withFrame, worthShowing } from "./liveView.js";
 import { ChecksEditor, SettingsEditor, VariablesEditor, problemsAt } from "./DocumentEditors.jsx";
 
 const TABS = ["node", "variables", "checks", "settings"];
@@ -294,7 +294,7 @@ export default function Studio({ config }) {
           {live && <LivePanel live={live} send={send} />}
         </aside>
       </div>
-      {live && live.view && <LiveScene view={live.view} pinned={pinned} onReady={sceneReady} onUnpin={unpin} />}
+      {live && live.view && worthShowing(live.view, pinned) && <LiveScene view={live.view} pinned={pinned} onReady={sceneReady} onUnpin={unpin} />}
     </div>
   );
 }

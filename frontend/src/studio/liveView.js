@@ -39,3 +39,8 @@ export function heldNow(view) {
   }
   return held;
 }
+
+/** Whether a live run has anything for the scene and lanes: a stage's bodies, a controller, a gripper, a pin. */
+export function worthShowing(view, pinned) {
+  return view.scene.bodies.length > 0 || view.phases.length > 0 || Object.keys(view.grippers).length > 0 || pinned.length > 0;
+}
