@@ -123,22 +123,6 @@ def build_app(session: Session, hosts: set[str]) -> Guard:
         return JSONResponse({"path": session.folder.relative(path), "layout": editing.drawn_layout(opened["data"], path),
                              **opened})
 
-    async def forms(request: Request):
-        return JSONResponse(editing.document_forms())
-
-    async def prims(request: Request):
-        from graphflow.studio.stage_prims import stage_prims
-
-        path = session.folder.resolve(request.query_params.get("path", ""))
-        return JSONResponse(await asyncio.to_thread(stage_prims, request.query_params.get("stage", ""), path,
-                                                    session.folder.root))
-
-    async def stages(request: Request):
-        from graphflow.studio.stage_prims import stage_choices
-
-        path = session.folder.resolve(request.query_params.get("path", ""))
-        return JSONResponse({"stages": await asyncio.to_thread(stage_choices, path, session.folder.root)})
-
     async def watched(request: Request):
         return JSONResponse(editing.watched_revision(session.folder.resolve(request.query_params.get("path", ""))))
 
@@ -156,6 +140,22 @@ def build_app(session: Session, hosts: set[str]) -> Guard:
         status = 200 if outcome.status == "saved" else 409
         return JSONResponse({"status": outcome.status, "revision": outcome.revision,
                              "problems": list(outcome.problems), "difference": outcome.difference}, status_code=status)
+
+    async def forms(request: Request):
+        return JSONResponse(editing.document_forms())
+
+    async def prims(request: Request):
+        from graphflow.studio.stage_prims import stage_prims
+
+        path = session.folder.resolve(request.query_params.get("path", ""))
+        return JSONResponse(await asyncio.to_thread(stage_prims, request.query_params.get("stage", ""), path,
+                                                    session.folder.root))
+
+    async def stages(request: Request):
+        from graphflow.studio.stage_prims import stage_choices
+
+        path = session.folder.resolve(request.query_params.get("path", ""))
+        return JSONResponse({"stages": await asyncio.to_thread(stage_choices, path, session.folder.root)})
 
     async def bad_input(request: Request, error: BadInput):
         return JSONResponse({"error": str(error), "status": 400}, status_code=400)

@@ -12,7 +12,8 @@ def test_the_page_and_the_api_answer_with_the_token(studio):
     assert status == 200 and info["opened"] == "counter.json" and "counter.json" in info["files"]
 
 
-@pytest.mark.parametrize("path", ["/", "/api/info", "/api/graph?path=counter.json"])
+@pytest.mark.parametrize("path", ["/", "/api/info", "/api/graph?path=counter.json", "/api/forms", "/api/stages?path=counter.json",
+                                  "/api/prims?path=counter.json&stage=asset:ur10.usda"])
 def test_a_request_without_the_token_is_refused(studio, path):
     status, body = studio.request("GET", path, token=False)
     assert status == 403 and "token" in body["error"]
