@@ -1,42 +1,106 @@
 """The scene and lanes part of a live frame: what the page's 3D scene and lanes need of the ticks a frame covers.
 
 A frame covers every tick since the previous one (one frame at most every 1/30 s, however many ticks
-ran). The scene needs only where each moving body is now, so each body's last pose sample of the
-frame is sent, rounded as the report rounds it; the lanes are timelines, so every change of a
-controller phase and of a gripper field within the frame is kept with its tick (they change a
-few times a run, so this stays small), and a gripper's rays and force limits when a close begins.
+ran). The scene needs only where each moving body is now, so the poses are read when the frame is
+made, rounded as the report rounds them, and only those that moved are sent. The lanes are
+timelines, and a gripper that closes in one tick or a controller phase shorter than a frame must
+still show, so a listener notes on each tick the changes of the controller phases and of each
+gripper's status, held objects and reason (a few comparisons a tick); the holding force, a plot,
+is read with the frame. Nothing here depends on the trace being recorded.
 """
 from __future__ import annotations
 
+from typing import Any
+
+from graphflow.observe.trace import (
+    phase_outputs,
+    sample_grippers,
+    surface_gripper_manager,
+    to_json_value,
+    used_grippers,
+)
 from graphflow.report.build import POSE_DECIMALS
 
-
-def _rounded(pose: list[float]) -> list[float]:
-    return [round(value, POSE_DECIMALS) + 0.0 for value in pose]   # + 0.0: no -0.0
+TICK_FIELDS = ("status", "gripped", "reason")   # gripper fields noted on every tick; the others once a frame
 
 
-def scene_part(header: dict, records: list[dict]) -> dict:
-    """``scene`` (last pose per moving body, closes' rays) and ``lanes`` (phase and gripper changes) of *records*.
+def _rounded(pose) -> list[float]:
+    (x, y, z), (qx, qy, qz, qw) = pose
+    return [round(float(value), POSE_DECIMALS) + 0.0 for value in (x, y, z, qx, qy, qz, qw)]   # + 0.0: no -0.0
 
-    *header* is the trace's header record: it names the outputs that carry a controller's phase.
-    """
-    phases = set(header.get("phases", ()))
-    poses: dict[str, list] = {}
-    rays: list[dict] = []
-    phase_changes: dict[str, list] = {}
-    gripper_changes: dict[str, dict[str, list]] = {}
-    for record in records:
-        tick = record["tick"]
-        for path, pose in record.get("poses", {}).items():
-            poses[path] = [tick, pose]
-        for key, value in record.get("outputs", {}).items():
-            if key in phases:
-                phase_changes.setdefault(key, []).append([tick, value])
-        for path, fields in record.get("grippers", {}).items():
-            series = gripper_changes.setdefault(path, {})
-            for name, value in fields.items():
-                series.setdefault(name, []).append([tick, value])
-        for path, close in record.get("rays", {}).items():
-            rays.append({"tick": tick, "gripper": path, "rays": close["rays"], "limits": close["limits"]})
-    return {"scene": {"poses": {path: [tick, _rounded(pose)] for path, (tick, pose) in poses.items()}, "rays": rays},
-            "lanes": {"phases": phase_changes, "grippers": gripper_changes}}
+
+class FrameScene:
+    """The ``scene`` and ``lanes`` of each frame of one live simulation; ``frame()`` when a frame is due."""
+
+    def __init__(self, simulation):
+        self.simulation = simulation
+        world, instance = simulation.world, simulation.instance
+        self._phases = []   # (the node's outputs dict, port name, "node.port") of each controller phase
+        for key in phase_outputs(instance.compiled):
+            node, port = key.rsplit(".", 1)
+            self._phases.append((instance.database(node).outputs.__dict__, port, key))
+        self._last: dict[str, Any] = {key: to_json_value(values[port]) for values, port, key in self._phases}
+        description = getattr(world, "description", None)
+        self._unused = {g.path for g in getattr(description, "surface_grippers", ())} - set(used_grippers(simulation))
+        bodies = dict(getattr(description, "bodies", {}) or {})
+        self._moving = [path for path, body in bodies.items() if body.kind != "static"]
+        self._poses = {path: _rounded(world.prim_pose(path)) for path in self._moving}
+        self._changes: dict[str, list] = {}
+        self._gripper_changes: dict[str, dict[str, list]] = {}
+        self._gripper_last: dict[str, dict[str, Any]] = {}
+        self._frame_fields: dict[str, dict[str, Any]] = {}
+        self._limited: set[str] = set()
+        simulation.add_listener(self)
+
+    def on_tick(self, simulation, tick: int) -> None:
+        """Note the phase and gripper changes of the tick that just ran."""
+        count = simulation.instance.tick_count
+        for values, port, key in self._phases:
+            value = to_json_value(values[port])
+            if value != self._last[key]:
+                self._last[key] = value
+                self._changes.setdefault(key, []).append([count, value])
+        manager = surface_gripper_manager(simulation.world)
+        if manager is None:
+            return
+        for path in manager.components:
+            if path in self._unused:
+                continue
+            now = {"status": manager.get_gripper_status(path).token, "gripped": list(manager.get_gripped_objects(path)),
+                   "reason": manager.component(path).reason}
+            last = self._gripper_last.setdefault(path, {})
+            for name, value in now.items():
+                if name not in last or last[name] != value:
+                    last[name] = value
+                    self._gripper_changes.setdefault(path, {}).setdefault(name, []).append([count, value])
+
+    def frame(self) -> dict:
+        """``scene`` (poses of bodies that moved, grippers' force limits when first seen) and ``lanes`` since the last."""
+        world, tick = self.simulation.world, self.simulation.instance.tick_count
+        poses = {}
+        for path in self._moving:
+            pose = _rounded(world.prim_pose(path))
+            if pose != self._poses[path]:
+                poses[path] = [tick, pose]
+                self._poses[path] = pose
+        grippers, self._gripper_changes = self._gripper_changes, {}
+        limits = {}
+        for path, sample in sample_grippers(world).items():
+            if path in self._unused:
+                continue
+            for name, value in sample.fields().items():
+                if name not in TICK_FIELDS and self._frame_fields.setdefault(path, {}).get(name, "unset") != value:
+                    self._frame_fields[path][name] = value
+                    grippers.setdefault(path, {})[name] = [[tick, value]]
+            if path not in self._limited:
+                self._limited.add(path)
+                limits[path] = self._limits(path)
+        phases, self._changes = self._changes, {}
+        return {"scene": {"poses": poses, "limits": limits}, "lanes": {"phases": phases, "grippers": grippers}}
+
+    def _limits(self, path: str) -> dict[str, float]:
+        """The gripper's force limits (N) that are set, as the report's force lane draws them."""
+        properties = surface_gripper_manager(self.simulation.world).component(path).properties
+        limits = {"force": properties.force_limit, "shear": properties.shear_force_limit,
+                  "coaxial": properties.coaxial_force_limit}
+        return {name: float(value) for name, value in limits.items() if value > 0}

@@ -19,7 +19,7 @@ from typing import Callable
 from graphflow.document import load_document
 from graphflow.errors import BadInput, GraphflowError
 from graphflow.studio.browser_input import BrowserKeys, BrowserPad
-from graphflow.studio.frame_scene import scene_part
+from graphflow.studio.frame_scene import FrameScene
 
 FRAME_SECONDS = 1 / 30
 logger = logging.getLogger(__name__)
@@ -72,6 +72,7 @@ class LiveRun:
         self.checked.preflight()
         self.simulation = self.checked.start()
         self.recording = ReportRecording(self.simulation, str(self.path))
+        self.scene = FrameScene(self.simulation)
         self.limit = self.checked.tick_limit()
         self.ended, self.failure, self._sent = None, None, 0
         self.publish({"type": "start", "run": run_data(self.recording.trace(), document), "limit": self.limit})
@@ -173,7 +174,7 @@ class LiveRun:
         frame: dict = {"type": "frame", "tick": self.simulation.tick_count, "time": self.simulation.world.time,
                        "playing": self._running(), "speed": self.speed, "ended": self.ended,
                        "outputs": {}, "computed": [], "grippers": {}, "log": [],
-                       **scene_part(self.recording.records[0], records)}
+                       **self.scene.frame()}
         computed: set[str] = set()
         for record in records:
             frame["outputs"].update(record.get("outputs", {}))

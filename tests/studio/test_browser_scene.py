@@ -54,6 +54,10 @@ def test_a_live_run_moves_the_cube_in_the_scene_and_draws_the_gripper_lanes(pick
         page.click("[data-action=pause]")
         page.wait_for_selector("[data-testid=live-bar][data-playing=false]")
         tick = int(page.get_attribute("[data-testid=live-bar]", "data-tick"))
+        while tick % 4:   # the trace samples poses every 4th tick: compare there
+            page.click("[data-action=step]")
+            tick += 1
+            page.wait_for_selector(f"[data-testid=live-bar][data-tick='{tick}']")
         page.wait_for_selector(f"[data-testid=live-scene][data-tick='{tick}']")
         shown = cube_position(page)
         pinned = page.evaluate(f"window.graphflowStudio.live.view.outputs[{PINNED!r}]")
@@ -64,7 +68,7 @@ def test_a_live_run_moves_the_cube_in_the_scene_and_draws_the_gripper_lanes(pick
         assert not page.errors, page.errors
     trace = read_trace(pick_place.folder / "ur10_pick_place.live.jsonl")
     samples = [record["poses"][CUBE] for record in trace.ticks if CUBE in record.get("poses", {}) and record["tick"] <= tick]
-    assert shown == pytest.approx(samples[-1][:3], abs=1e-5)   # the scene shows the run's own last pose sample
+    assert shown == pytest.approx(samples[-1][:3], abs=1e-5)   # the scene shows the run's pose at that tick
     assert len({value for _tick, value in pinned}) > 1, pinned   # the phase changed while it ran
     assert all(value == value_at(trace, PINNED, at) for at, value in pinned), pinned
     closed_tick = next(record["tick"] for record in trace.ticks

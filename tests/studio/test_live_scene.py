@@ -55,10 +55,13 @@ def test_the_frames_carry_every_phase_and_gripper_change_and_the_bodies_last_pos
                         if "status" in r.get("grippers", {}).get(GRIPPER, {})]
     assert [value for _tick, value in statuses][-1] == "Closed" and len(phases) >= 4   # the run got to the carry
     samples = {r["tick"]: r["poses"][CUBE] for r in records if CUBE in r.get("poses", {})}
-    for frame in frames:
+    compared = 0
+    for frame in frames:   # the trace samples poses every 4th tick: on those ticks its last sample is the pose then
         sent = frame["scene"]["poses"].get(CUBE)
-        if sent is not None:
-            assert sent[1] == pytest.approx(samples[sent[0]], abs=1e-5)
-            assert sent[0] == max(tick for tick in samples if tick <= frame["tick"])   # the frame's last sample
-    closes = [close for frame in frames for close in frame["scene"]["rays"]]
-    assert [close["gripper"] for close in closes] == [GRIPPER] and closes[0]["rays"]
+        if sent is not None and sent[0] % 4 == 0:
+            assert sent[0] == frame["tick"]
+            assert sent[1] == pytest.approx(samples[max(tick for tick in samples if tick <= sent[0])], abs=1e-5)
+            compared += 1
+    assert compared >= 3, compared
+    limits = [frame["scene"]["limits"][GRIPPER] for frame in frames if GRIPPER in frame["scene"]["limits"]]
+    assert limits == [next(close["limits"] for r in records for close in r.get("rays", {}).values())]   # sent once

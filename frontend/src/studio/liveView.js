@@ -1,5 +1,5 @@
 // The live run as the report's scene and lanes read it: the start message's run data, grown frame by frame.
-// Frames carry each moving body's last pose sample and every phase and gripper-field change with its tick
+// Frames carry the poses of the bodies that moved, every phase and gripper status change with its tick
 // (graphflow/studio/frame_scene.py); pinned outputs are sampled once a frame. The lists grow in place (the
 // scene keeps its three.js objects); each frame gives a new top-level object so the panels redraw.
 
@@ -20,16 +20,14 @@ function parts(view, frame) {
   const grippers = Object.fromEntries(Object.entries(frame.grippers || {}).map(([path, fields]) =>
     [path, Object.fromEntries(Object.entries(fields).map(([name, value]) => [name, at(value)]))]));
   const poses = Object.fromEntries(Object.entries(frame.poses || {}).map(([path, pose]) => [path, [frame.tick, pose]]));
-  return { scene: { poses, rays: [] }, lanes: { phases, grippers } };
+  return { scene: { poses, limits: {} }, lanes: { phases, grippers } };
 }
 
 export function withFrame(view, frame, pinned) {
   const { scene, lanes } = parts(view, frame);
   for (const [path, sample] of Object.entries(scene.poses)) appendAfter(view.poses[path] ||= [], [sample]);
-  for (const close of scene.rays) {
-    if (view.rays.some((known) => known.tick === close.tick && known.gripper === close.gripper)) continue;
-    view.rays.push({ tick: close.tick, gripper: close.gripper, rays: close.rays });
-    view.limits[close.gripper] = Object.entries(close.limits).map(([name, value]) => ({ name, value }));
+  for (const [gripper, limits] of Object.entries(scene.limits)) {
+    view.limits[gripper] = Object.entries(limits).map(([name, value]) => ({ name, value }));
   }
   for (const [key, changes] of Object.entries(lanes.phases)) appendAfter(view.outputs[key] ||= [], changes);
   for (const [path, fields] of Object.entries(lanes.grippers)) {
