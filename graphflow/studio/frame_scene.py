@@ -104,3 +104,22 @@ class FrameScene:
         limits = {"force": properties.force_limit, "shear": properties.shear_force_limit,
                   "coaxial": properties.coaxial_force_limit}
         return {name: float(value) for name, value in limits.items() if value > 0}
+
+
+def merge_parts(older: dict, newer: dict) -> dict:
+    """The scene and lanes parts of two consecutive frames as one: the newest poses and limits, every lane change.
+
+    For a live loop that merges frames waiting for a slow socket: ``{**older, **newer}`` would drop
+    the older frame's lane changes and the poses of bodies that moved only in it.
+    """
+    lanes = {"phases": {key: list(changes) for key, changes in older["lanes"]["phases"].items()},
+             "grippers": {path: {name: list(changes) for name, changes in fields.items()}
+                          for path, fields in older["lanes"]["grippers"].items()}}
+    for key, changes in newer["lanes"]["phases"].items():
+        lanes["phases"].setdefault(key, []).extend(changes)
+    for path, fields in newer["lanes"]["grippers"].items():
+        for name, changes in fields.items():
+            lanes["grippers"].setdefault(path, {}).setdefault(name, []).extend(changes)
+    scene = {"poses": {**older["scene"]["poses"], **newer["scene"]["poses"]},
+             "limits": {**older["scene"]["limits"], **newer["scene"]["limits"]}}
+    return {"scene": scene, "lanes": lanes}
