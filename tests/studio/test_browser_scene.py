@@ -58,7 +58,7 @@ def test_a_live_run_moves_the_cube_in_the_scene_and_draws_the_gripper_lanes(pick
             page.click("[data-action=step]")
             tick += 1
             page.wait_for_selector(f"[data-testid=live-bar][data-tick='{tick}']")
-        page.wait_for_selector(f"[data-testid=live-scene][data-tick='{tick}']")
+        page.wait_for_selector(f"body[data-scene-tick='{tick}']")   # the scene's bodies are placed for this tick
         shown = cube_position(page)
         pinned = page.evaluate(f"window.graphflowStudio.live.view.outputs[{PINNED!r}]")
         assert PINNED in page.inner_text("[data-testid=lanes]")
