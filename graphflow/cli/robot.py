@@ -50,8 +50,12 @@ def command_robot_add(args) -> int:
             options.suction_tip = float(tip) if tip else options.suction_tip
         except ValueError:
             raise BadInput(f"--suction: {args.suction!r} is not LINK or LINK:TIP (metres)") from None
-    if any("=" not in item for item in args.package):
-        raise BadInput("--package takes NAME=FOLDER")
+    packages = []
+    for item in args.package:
+        name, sep, folder = item.partition("=")
+        if not sep or not name or not Path(folder).is_dir():
+            raise BadInput(f"--package {item}: not NAME=FOLDER with an existing FOLDER")
+        packages.append(f"{name}={Path(folder).resolve()}")
     command = find_command(converter, args.converter)
     output = Path(args.output or f"{source.stem}.usda")
     companion = output.parent / f"{output.stem}_usd"
@@ -59,9 +63,10 @@ def command_robot_add(args) -> int:
     if not args.physics_only:
         refuse_existing(companion, args.force, folder=True)
     mjcf = read_mjcf(source) if converter is MJCF else None
+    options.provenance = provenance(source, args)
     with tempfile.TemporaryDirectory(prefix="graphflow-robot-") as scratch:
         converted = Path(scratch) / "converted"
-        main, seconds = run_converter(command, source.resolve(), converted, args.package)
+        main, seconds = run_converter(command, source.resolve(), converted, packages)
         before = folder_bytes(converted)
         print(f"converted {source} with {Path(command[0]).name} in {seconds:.2f} s ({before} bytes written)")
         if args.physics_only:
@@ -101,8 +106,15 @@ def _post_process_over(converted: Path, options, mjcf):
     for key in ("defaultPrim", "metersPerUnit", "upAxis", "kilogramsPerUnit"):
         if base.pseudoRoot.HasInfo(key):
             layer.pseudoRoot.SetInfo(key, base.pseudoRoot.GetInfo(key))
-    layer.documentation = "graphflow robot add: drives, home pose and tool over the converter's output (sublayer)"
+    layer.documentation = options.provenance
     outcome = post_process(Usd.Stage.Open(layer), options, mjcf)
     relative = f"./{converted.parent.name}/{converted.name}"
     layer.subLayerPaths[0] = relative
     return outcome, layer.ExportToString()
+
+
+def provenance(source: Path, args) -> str:
+    """The layer's doc: the converter and graphflow's options, so the asset says how to make it again."""
+    flags = [f"--home {args.home}" if args.home else "", "--physics-only" if args.physics_only else "",
+             f"--suction {args.suction}" if args.suction else ""]
+    return f"Made from {source.name} by: graphflow robot add {source.name} {' '.join(f for f in flags if f)}".rstrip()

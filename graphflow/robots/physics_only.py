@@ -28,16 +28,17 @@ def flatten_physics_only(stage) -> Flattened:
     from pxr import Usd
 
     layer = stage.Flatten()
+    layer.documentation = stage.GetRootLayer().documentation
     flat = Usd.Stage.Open(layer)
     visual, render = [], []
-    for prim in flat.Traverse():
+    for prim in flat.TraverseAll():
         if _is_visual_geometry(prim):
             visual.append(prim.GetPath())
         elif prim.GetTypeName() in RENDER_TYPES and not _has_schema(prim, "PhysicsMaterialAPI"):
             render.append(prim.GetPath())
     for path in visual + render:
         _remove(layer, path)
-    for prim in flat.Traverse():
+    for prim in flat.TraverseAll():
         spec = layer.GetPrimAtPath(prim.GetPath())
         for name in [p.name for p in spec.properties]:
             if name == "material:binding" or name.startswith("primvars:") or name in VISUAL_ONLY_PROPERTIES:
@@ -67,7 +68,7 @@ def _remove(layer, path) -> None:
 def _remove_empty_notes(flat, layer) -> int:
     """Remove, deepest first, typeless or Scope prims with no children, no schemas and only custom properties."""
     removed = 0
-    for prim in sorted(flat.Traverse(), key=lambda p: -p.GetPath().pathElementCount):
+    for prim in sorted(flat.TraverseAll(), key=lambda p: -p.GetPath().pathElementCount):
         spec = layer.GetPrimAtPath(prim.GetPath())
         if spec is None or prim.GetTypeName() not in ("", "Scope") or spec.nameChildren:
             continue

@@ -27,6 +27,7 @@ class Options:
     physics_only: bool = False
     suction_link: str | None = None                             # a link (body) name: add a suction tool there
     suction_tip: float = 0.1                                    # m along the link's +Z
+    provenance: str = ""                                        # the layer's doc: how it was made
 
 
 @dataclass
@@ -68,6 +69,8 @@ def post_process(stage, options: Options, mjcf: MjcfFacts | None = None) -> Outc
     lines += [f"dropped: {line}" for line in dropped] or ["dropped: nothing (no tendons, mimic joints, "
                                                           "equality constraints, unmapped actuators or sensors)"]
     text = None
+    if options.provenance:
+        stage.GetEditTarget().GetLayer().documentation = options.provenance
     if options.physics_only:
         flat = flatten_physics_only(stage)
         text = flat.text
