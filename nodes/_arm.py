@@ -6,7 +6,7 @@ The kinematic chain is read off the stage (graphflow.usd's description): from th
 gripper's attachment joint, up the joint tree to the articulation's root body; each joint's frame in
 its parent link, its axis, its limits; the tool frame is the attachment joint's frame, whose +X is the
 gripper's forward axis. An arm whose joint names are the UR10's keeps ``ur10_chain`` (the published
-numbers, identical to the stage's to 1e-9 m; its traces stay bit-identical).
+numbers, the same as the stage's to 1e-7 m; its traces stay bit-identical).
 """
 from __future__ import annotations
 
