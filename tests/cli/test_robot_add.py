@@ -11,7 +11,7 @@ import pytest
 
 from graphflow.robots.gains import NATURAL_FREQUENCY
 from graphflow.usd.physics_import import load_description
-from tests.robots.converted import URDF_ARM
+from tests.robots.converted import MJCF_SOURCE, URDF_ARM, write_arm
 from tests.robots.reference import carried
 
 FAKE = f"""#!{sys.executable}
@@ -135,3 +135,22 @@ def test_a_failed_conversion_is_exit_1_with_the_converters_last_line(cell):
     assert result.stderr.splitlines() == [
         f"graphflow: run-time error: urdf_usd_converter could not convert {cell / 'broken.urdf'}: "
         "[Error] could not parse the robot: line 3"]
+
+
+def test_an_mjcf_file_goes_to_the_mujoco_converter_and_its_keyframe_and_sensors_are_read(cell, tmp_path_factory):
+    """The fake mujoco_usd_converter writes the arm with the MJCF parts; graphflow reads arm.xml itself for
+    what the USD lost: the keyframe "home" sets the pose, the sensor and the other keyframe are listed."""
+    made = tmp_path_factory.mktemp("mjcf")
+    write_arm(made / "arm.usda", mjcf=True)
+    (cell / "arm.xml").write_text(MJCF_SOURCE)
+    fake = cell / "bin" / "mujoco_usd_converter"
+    fake.write_text(f"#!{sys.executable}\nimport shutil, sys\nshutil.copytree({str(made)!r}, sys.argv[2])\n")
+    fake.chmod(0o755)
+    result = graphflow("robot", "add", "arm.xml", "--physics-only", cwd=cell, path=str(cell / "bin"))
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert "dropped: sensor shoulder_pos (jointpos): dropped (graphflow reads joint and body state through its " \
+           "own nodes)" in lines
+    assert any(line.startswith("drive shoulder: k 400 N m/rad, d 20 N m s/rad (MjcActuator shoulder_act), max 50 N m; "
+                               "home 17.19 deg (keyframe home)") for line in lines)
+    assert drives(cell / "arm.usda")["elbow"].target_position == pytest.approx(-0.6, abs=1e-6)
