@@ -65,18 +65,18 @@ def command_robot_add(args) -> int:
     mjcf = read_mjcf(source) if converter is MJCF else None
     options.provenance = provenance(source, args)
     with tempfile.TemporaryDirectory(prefix="graphflow-robot-") as scratch:
-        converted = Path(scratch) / "converted"
+        converted = Path(scratch) / companion.name      # the companion folder, made here until all went well
         main, seconds = run_converter(command, source.resolve(), converted, packages)
         before = folder_bytes(converted)
-        print(f"converted {source} with {Path(command[0]).name} in {seconds:.2f} s ({before} bytes written)")
+        print(f"converted {source} with {converter.executable} in {seconds:.2f} s ({before} bytes written)")
         if args.physics_only:
             outcome = _post_process_flat(main, options, mjcf)
             text = outcome.text
         else:
+            outcome, text = _post_process_over(main, options, mjcf)
             if companion.exists():
                 shutil.rmtree(companion)
             shutil.copytree(converted, companion)
-            outcome, text = _post_process_over(companion / main.name, options, mjcf)
     for line in outcome.lines:
         print(line)
     write_text(output, text, force=True)

@@ -154,3 +154,11 @@ def test_an_mjcf_file_goes_to_the_mujoco_converter_and_its_keyframe_and_sensors_
     assert any(line.startswith("drive shoulder: k 400 N m/rad, d 20 N m s/rad (MjcActuator shoulder_act), max 50 N m; "
                                "home 17.19 deg (keyframe home)") for line in lines)
     assert drives(cell / "arm.usda")["elbow"].target_position == pytest.approx(-0.6, abs=1e-6)
+
+
+def test_a_failed_post_processing_leaves_nothing_behind(cell):
+    """A home outside a joint's range is refused after the conversion ran: no OUT.usda, no OUT_usd folder."""
+    result = graphflow("robot", "add", "arm.urdf", "--home", "elbow=1.5", cwd=cell, path=str(cell / "bin"))
+    assert result.returncode == 2
+    assert result.stderr.splitlines()[-1] == "graphflow: error: home of elbow: 1.5 is outside its range [-2.0944, 1.0472]"
+    assert not (cell / "arm.usda").exists() and not (cell / "arm_usd").exists()
