@@ -117,3 +117,35 @@ def test_the_panda_picks_and_places_the_cube_with_suction():
     assert math.hypot(*linear) < 1e-3
     assert logs[3] == "phase 3 gripper_close: gripper Closed" and logs[5] == "phase 5 move_to_place: gripper Closed"
     assert logs[-1] == "pick and place done"
+
+
+def test_the_gravity_load_is_pybullets_inverse_dynamics_too():
+    """Before anything moves, the torques PyBullet's inverse dynamics needs to hold the built Panda at home
+    are -tau_g of the numpy statics (to 0.01 N m: the two 1 g frames graphflow gives its massless links)."""
+    parsed = description()
+    torques = gravity_torques(parsed)
+    with create_world(str(PANDA)) as world:
+        articulation = world.scene.articulations["/panda"]
+        states = world.client.getJointStates(articulation.body_id, articulation.joint_indices)
+        rest = [0.0] * len(states)
+        holding = world.client.calculateInverseDynamics(articulation.body_id, [s[0] for s in states], rest, rest)
+        by_path = {path: sign * torque for path, sign, torque in zip(articulation.joint_paths, articulation.signs,
+                                                                      holding)}
+    for index in range(1, 8):
+        assert by_path[f"/panda/Physics/panda_joint{index}"] == pytest.approx(-torques[index - 1], abs=0.01)
+
+
+def test_any_stage_composes_the_panda_by_its_asset_path(tmp_path):
+    """@graphflow/panda.usda@ resolves through the asset roots: a cell of one's own gets the arm and gripper."""
+    from graphflow.usd.asset_roots import asset_roots
+
+    assert (asset_roots()["graphflow"] / "panda.usda").is_file()
+    cell = tmp_path / "cell.usda"
+    cell.write_text('#usda 1.0\n(\n    defaultPrim = "World"\n    metersPerUnit = 1\n    upAxis = "Z"\n)\n'
+                    'def Xform "World"\n{\n    def Xform "panda" (\n        prepend references = @graphflow/panda.usda@\n'
+                    '    )\n    {\n    }\n}\n')
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        parsed = load_description(str(cell))
+    assert [g.path for g in parsed.surface_grippers] == ["/World" + HAND + "/SurfaceGripper"]
+    assert [a.path for a in parsed.articulations] == ["/World/panda"]
