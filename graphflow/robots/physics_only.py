@@ -48,9 +48,17 @@ def flatten_physics_only(stage) -> Flattened:
 
 
 def _is_visual_geometry(prim) -> bool:
-    from pxr import UsdGeom
+    """Geometry nothing physical is on or below: no collider, body, joint or gripper prim in its subtree."""
+    from pxr import Usd, UsdGeom
 
-    return prim.IsA(UsdGeom.Gprim) and not _has_schema(prim, "PhysicsCollisionAPI")
+    return prim.IsA(UsdGeom.Gprim) and not any(_physical(p) for p in Usd.PrimRange(prim, Usd.PrimAllPrimsPredicate))
+
+
+def _physical(prim) -> bool:
+    listop = prim.GetMetadata("apiSchemas")
+    schemas = listop.ApplyOperations([]) if listop else []
+    return (any(name.startswith(("Physics", "Physx", "Isaac")) for name in schemas)
+            or prim.GetTypeName().startswith(("Physics", "Isaac")))
 
 
 def _has_schema(prim, name: str) -> bool:

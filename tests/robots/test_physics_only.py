@@ -60,3 +60,17 @@ def test_a_collision_meshs_render_data_is_dropped(tmp_path, name):
     flat.GetRootLayer().ImportFromString(flatten_physics_only(stage).text)
     mesh = flat.GetPrimAtPath("/arm/Geometry/base/base_visual")
     assert mesh.GetAttribute("points").Get() is not None and not mesh.GetAttribute(name).HasAuthoredValue()
+
+
+def test_geometry_that_is_a_body_or_holds_physics_is_kept(tmp_path):
+    """A Cube that is a rigid body (its collider a child sphere) and a Mesh holding a joint are not visual."""
+    from pxr import UsdGeom, UsdPhysics
+
+    stage = Usd.Stage.Open(str(write_arm(tmp_path / "arm.usda")))
+    box = UsdGeom.Cube.Define(stage, "/arm/Geometry/box")
+    UsdPhysics.RigidBodyAPI.Apply(box.GetPrim())
+    UsdPhysics.CollisionAPI.Apply(UsdGeom.Sphere.Define(stage, "/arm/Geometry/box/collider").GetPrim())
+    UsdPhysics.FixedJoint.Define(stage, "/arm/Geometry/base/base_visual/weld")
+    flat = flatten_physics_only(stage)
+    assert flat.visual_prims == 0
+    assert 'def Cube "box"' in flat.text and 'def Mesh "base_visual"' in flat.text
