@@ -41,16 +41,17 @@ def read_actuators(stage) -> tuple[dict[str, Servo], list[str]]:
         gain = list(prim.GetAttribute("mjc:gainPrm").Get() or []) if prim.HasAttribute("mjc:gainPrm") else []
         bias = list(prim.GetAttribute("mjc:biasPrm").Get() or []) if prim.HasAttribute("mjc:biasPrm") else []
         bias_type = prim.GetAttribute("mjc:biasType").Get() if prim.HasAttribute("mjc:biasType") else None
-        on_joint = target is not None and target.GetTypeName() in ("PhysicsRevoluteJoint", "PhysicsPrismaticJoint")
+        kind = target.GetTypeName() if target is not None else ""
+        on_joint = target is not None and kind in ("PhysicsRevoluteJoint", "PhysicsPrismaticJoint")
         kp = gain[0] if gain else 0.0
-        if on_joint and bias_type == "affine" and kp > 0 and len(bias) >= 3 and math.isclose(bias[1], -kp):
+        if target is not None and on_joint and bias_type == "affine" and kp > 0 and len(bias) >= 3 \
+                and math.isclose(bias[1], -kp):
             servos[str(target.GetPath())] = Servo(name, str(target.GetPath()), float(kp), float(-bias[2]),
                                                   _force_limit(prim))
             continue
-        what = "on a tendon" if target is not None and target.GetTypeName() == "MjcTendon" else (
-            "not a position servo (no kp)" if on_joint else "on no joint")
-        unmapped.append(f"MjcActuator {prim.GetPath()}: not mapped ({what}); "
-                        + (f"{target.GetName()} gets the rule's drive" if on_joint else "nothing drives it"))
+        what = "on a tendon" if kind == "MjcTendon" else ("not a position servo (no kp)" if on_joint else "on no joint")
+        driven = f"{target.GetName()} gets the rule's drive" if target is not None and on_joint else "nothing drives it"
+        unmapped.append(f"MjcActuator {prim.GetPath()}: not mapped ({what}); {driven}")
     return servos, unmapped
 
 

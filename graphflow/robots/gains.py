@@ -51,20 +51,20 @@ def carried_inertia(description: StageDescription, joint: Joint) -> float:
     description holds, with the other joints locked: sum of m |r_perp|^2 + a^T R I R^T a.
     """
     beyond = bodies_beyond(description, joint)
-    masses = [description.bodies[path] for path in beyond if description.bodies[path].mass is not None]
+    masses = [(description.bodies[path].pose, description.bodies[path].mass) for path in beyond]
+    carried = [(pose, properties) for pose, properties in masses if properties is not None]
     if joint.kind == "prismatic":
-        return sum(body.mass.mass for body in masses)
+        return sum(properties.mass for _pose, properties in carried)
     frame = compose(description.bodies[joint.body0].pose, joint.pose0) if joint.body0 else joint.pose0
     axis = quat_rotate(frame[1], AXIS_VECTORS[joint.axis])
     origin = frame[0]
     total = 0.0
-    for body in masses:
-        properties = body.mass
-        centre = compose(body.pose, (properties.center_of_mass, (0.0, 0.0, 0.0, 1.0)))[0]
+    for pose, properties in carried:
+        centre = compose(pose, (properties.center_of_mass, (0.0, 0.0, 0.0, 1.0)))[0]
         r = tuple(c - o for c, o in zip(centre, origin))
         along = sum(a * b for a, b in zip(r, axis))
         total += properties.mass * (sum(c * c for c in r) - along * along)
-        principal = quat_matrix(quat_multiply(body.pose[1], properties.principal_axes))
+        principal = quat_matrix(quat_multiply(pose[1], properties.principal_axes))
         for i, moment in enumerate(properties.diagonal_inertia):
             column = sum(principal[3 * row + i] * axis[row] for row in range(3))   # the axis along principal axis i
             total += moment * column * column
@@ -75,14 +75,16 @@ def bodies_beyond(description: StageDescription, joint: Joint) -> list[str]:
     """The bodies the joint moves: body1 and everything joined to it, not crossing back through *joint*."""
     neighbours: dict[str, list[str]] = {}
     for other in description.joints.values():
-        if other is joint or other.exclude_from_articulation or not (other.body0 and other.body1):
+        if other is joint or other.exclude_from_articulation or other.body0 is None or other.body1 is None:
             continue
         neighbours.setdefault(other.body0, []).append(other.body1)
         neighbours.setdefault(other.body1, []).append(other.body0)
+    if joint.body1 is None:
+        return []
     seen, pending = {joint.body1}, [joint.body1]
     while pending:
         for nxt in neighbours.get(pending.pop(), []):
             if nxt not in seen and nxt != joint.body0:
                 seen.add(nxt)
                 pending.append(nxt)
-    return sorted(path for path in seen if path is not None)
+    return sorted(seen)

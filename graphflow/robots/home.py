@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 
 from graphflow.errors import BadInput
-from graphflow.poses import AXIS_VECTORS, Pose, compose, invert, quat_from_axis_angle, relative
+from graphflow.poses import AXIS_VECTORS, IDENTITY_POSE, Pose, compose, invert, quat_from_axis_angle, relative
 from graphflow.usd.description import Joint, StageDescription
 
 MOVABLE = ("revolute", "prismatic")
@@ -75,19 +75,18 @@ def posed_bodies(description: StageDescription, home: dict[str, float]) -> dict[
     """World poses of the bodies with the movable joints at *home*, walking the joint tree out from the bodies
     no joint moves; a fixed joint keeps the offset its bodies are authored at."""
     poses = {path: body.pose for path, body in description.bodies.items()}
-    joints = [joint for joint in description.joints.values()
-              if joint.body0 and joint.body1 and not joint.exclude_from_articulation]
-    moved = {joint.body1 for joint in joints}
+    links = [(joint.body0, joint.body1, joint) for joint in description.joints.values()
+             if joint.body0 is not None and joint.body1 is not None and not joint.exclude_from_articulation]
+    moved = {child for _parent, child, _joint in links}
     placed = {path for path in poses if path not in moved}
     pending = True
     while pending:
         pending = False
-        for joint in joints:
-            if joint.body0 in placed and joint.body1 not in placed:
-                frame = compose(poses[joint.body0], joint.pose0)
-                poses[joint.body1] = compose(compose(frame, _joint_motion(description, joint, home)),
-                                             invert(joint.pose1))
-                placed.add(joint.body1)
+        for parent, child, joint in links:
+            if parent in placed and child not in placed:
+                frame = compose(poses[parent], joint.pose0)
+                poses[child] = compose(compose(frame, _joint_motion(description, joint, home)), invert(joint.pose1))
+                placed.add(child)
                 pending = True
     return poses
 
@@ -95,8 +94,8 @@ def posed_bodies(description: StageDescription, home: dict[str, float]) -> dict[
 def _joint_motion(description: StageDescription, joint: Joint, home: dict[str, float]) -> Pose:
     """Joint frame 1 in joint frame 0: the motion at the home value, or the authored offset of a fixed joint."""
     if joint.kind not in MOVABLE or joint.path not in home:
-        bodies = description.bodies
-        return relative(compose(bodies[joint.body0].pose, joint.pose0), compose(bodies[joint.body1].pose, joint.pose1))
+        pose0, pose1 = (description.bodies[body].pose if body else IDENTITY_POSE for body in (joint.body0, joint.body1))
+        return relative(compose(pose0, joint.pose0), compose(pose1, joint.pose1))
     axis, value = AXIS_VECTORS[joint.axis], home[joint.path]
     if joint.kind == "revolute":
         return (0.0, 0.0, 0.0), quat_from_axis_angle(axis, value)

@@ -39,8 +39,9 @@ def read_mjcf(path: Path) -> MjcfFacts:
             joints.append((joint.get("name", ""), "free"))
         elif joint.tag == "joint" and _in_worldbody(root, joint):
             joints.append((joint.get("name", ""), joint.get("type", "hinge")))
-            if joint.get("damping"):
-                facts.damping[joint.get("name", "")] = float(joint.get("damping"))
+            damping = joint.get("damping")
+            if damping:
+                facts.damping[joint.get("name", "")] = float(damping)
     keys = root.findall("./keyframe/key")
     chosen = next((key for key in keys if key.get("name") == "home"), keys[0] if keys else None)
     if chosen is not None:
