@@ -50,6 +50,8 @@ def command_robot_add(args) -> int:
             options.suction_tip = float(tip) if tip else options.suction_tip
         except ValueError:
             raise BadInput(f"--suction: {args.suction!r} is not LINK or LINK:TIP (metres)") from None
+    if args.package and converter is MJCF:
+        raise BadInput("--package is for URDF files (package:// paths); an MJCF file names its meshes itself")
     packages = []
     for item in args.package:
         name, sep, folder = item.partition("=")

@@ -115,8 +115,10 @@ def test_a_missing_converter_is_one_line_saying_how_to_install_it_in_its_own_env
     (["arm.urdf", "--converter", "nowhere/python"], "--converter: nowhere/python is not an executable file; "),
     (["arm.urdf", "--home", "shoulder"], "--home: 'shoulder' is not NAME=VALUE (a joint name and radians or metres)"),
     (["arm.urdf", "--package", "meshes"], "--package meshes: not NAME=FOLDER with an existing FOLDER"),
+    (["arm.xml", "--package", "meshes=meshes"], "--package is for URDF files (package:// paths); an MJCF file names"),
 ])
 def test_bad_input_is_one_line_and_exit_2(cell, args, line):
+    (cell / "arm.xml").write_text(MJCF_SOURCE)
     result = graphflow("robot", "add", *args, cwd=cell, path=str(cell / "bin"))
     assert result.returncode == 2
     assert len(result.stderr.splitlines()) == 1 and result.stderr.startswith("graphflow: error: " + line)
