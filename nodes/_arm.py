@@ -5,8 +5,9 @@ registry away).
 The kinematic chain is read off the stage (graphflow.usd's description): from the body holding the
 gripper's attachment joint, up the joint tree to the articulation's root body; each joint's frame in
 its parent link, its axis, its limits; the tool frame is the attachment joint's frame, whose +X is the
-gripper's forward axis. An arm whose joint names are the UR10's keeps ``ur10_chain`` (the published
-numbers, the same as the stage's to 1e-7 m; its traces stay bit-identical).
+gripper's forward axis. Where that chain is the UR10's (same joints, same tool poses), ``ur10_chain`` is used
+(the published numbers, the stage's to 1e-7 m): the UR10's traces stay bit-identical. A UR10 with another
+tool, or converted with another gripper, gets its stage chain.
 """
 from __future__ import annotations
 
@@ -29,12 +30,7 @@ class Arm:
         self.world = world
         self.robot_path = robot_path
         names = world.joint_names(robot_path)
-        if tuple(n for n in names if n in UR10_JOINT_NAMES) == UR10_JOINT_NAMES:
-            from graphflow.kinematics import ur10_chain
-
-            self.chain, base = ur10_chain(), robot_path
-        else:
-            self.chain, base = chain_from_stage(world, gripper_path)
+        self.chain, base = arm_chain(world, robot_path, gripper_path, names)
         missing = [name for name in self.chain.names if name not in names]
         if missing:
             raise ValueError(f"{robot_path} does not move the gripper's chain: no joint {', '.join(missing)}")
@@ -59,14 +55,52 @@ class Arm:
         return self.solution
 
 
+def arm_chain(world, robot_path: str, gripper_path: str, names):
+    """(chain, path of the prim its base frame is): the stage's, or ``ur10_chain`` where it is the same arm
+    (its joints, and the same tool pose from the robot prim to 1 um at test configurations), where the world
+    has no stage (the UR10 test worlds) or where the gripper has no attachment frame (the tutorial's legacy
+    gripper at the published tool point)."""
+    from graphflow.kinematics import ur10_chain
+
+    has_stage = getattr(world, "description", None) is not None or getattr(world, "stage", None) is not None
+    if tuple(n for n in names if n in UR10_JOINT_NAMES) != UR10_JOINT_NAMES:
+        if not has_stage:
+            raise ValueError("this world has no stage to read the arm's joints from")
+        return chain_from_stage(world, gripper_path)
+    published = ur10_chain()
+    try:
+        found = chain_from_stage(world, gripper_path) if has_stage else None
+    except ValueError:      # no attachment frame to read (the tutorial's legacy gripper): the published tool
+        return published, robot_path
+    if found is None or _same_tool_poses(world, (published, robot_path), found):
+        return published, robot_path
+    return found
+
+
+def _same_tool_poses(world, first, second) -> bool:
+    """Whether two (chain, base prim) give the same world tool pose (1 um, 1 urad) at a few configurations."""
+    import numpy as np
+
+    if first[0].names != second[0].names:
+        return False
+    bases = [world.prim_pose(base) for _chain, base in (first, second)]
+    for q in np.linspace(-2.5, 2.5, 5)[:, None] * np.linspace(0.3, 1.0, len(first[0].names))[None, :]:
+        poses = []
+        for (chain, _base), base_pose in zip((first, second), bases):
+            tool = chain.forward(q)
+            rotation = np.array(quat_matrix(base_pose[1])).reshape(3, 3)
+            poses.append((np.array(base_pose[0]) + rotation @ tool[:3, 3], rotation @ tool[:3, :3]))
+        if not (np.allclose(poses[0][0], poses[1][0], atol=1e-6) and np.allclose(poses[0][1], poses[1][1], atol=1e-6)):
+            return False
+    return True
+
+
 def chain_from_stage(world, gripper_path: str):
     """(SerialChain from the root body to the gripper's attachment frame, the root body's path)."""
     from graphflow.usd.physics_import import load_description
 
     description = getattr(world, "description", None)
     if description is None:
-        if getattr(world, "stage", None) is None:
-            raise ValueError("this world has no stage to read the arm's joints from")
         description = load_description(world.stage)
     return chain_from_description(description, gripper_path)
 

@@ -60,3 +60,28 @@ def test_a_gripper_that_is_not_there_is_named(tmp_path):
     stage = Usd.Stage.Open(str(write_arm(tmp_path / "arm.usda")))
     with pytest.raises(ValueError, match="no surface gripper with an attachment point at /arm/Gripper"):
         chain_from_description(parse(stage), "/arm/Gripper")
+
+
+@pytest.mark.parametrize("tip", [0.1611, 0.25])
+def test_a_ur10_keeps_the_published_chain_only_where_its_tool_is_the_published_one(tip):
+    """The UR10 stage with its attachment point at the published 0.1611 m drives ur10_chain (bit-identical
+    traces); moved to 0.25 m, the controllers' arm is the stage's and its tool is 0.25 m along ee_link +X."""
+    from pxr import Gf
+
+    from graphflow.physics import create_world
+    from graphflow.poses import compose
+    from graphflow_nodes._arm import Arm
+
+    stage = Usd.Stage.Open(str(ROOT / "graphflow" / "assets" / "ur10_pick_place.usda"))
+    stage.SetEditTarget(stage.GetSessionLayer())
+    stage.GetPrimAtPath("/World/ur10/ee_link/attachment_joint").GetAttribute("physics:localPos0").Set(
+        Gf.Vec3f(tip, 0.0, 0.0))
+    with create_world(stage) as world:
+        arm = Arm(world, "/World/ur10", "/World/ur10/ee_link/SurfaceGripper")
+        home = arm.solution
+        tool = arm.chain.forward(home)
+        position = compose(arm.base_pose, (tuple(tool[:3, 3]), (0, 0, 0, 1)))[0]
+        expected = compose(world.prim_pose("/World/ur10/ee_link"), ((tip, 0.0, 0.0), (0, 0, 0, 1)))[0]
+    published = ur10_chain()
+    assert np.allclose(position, expected, atol=1e-6)
+    assert (np.array_equal(arm.chain.forward(home), published.forward(home))) == (tip == 0.1611)
