@@ -48,7 +48,8 @@ _RENDERING = {
             "ROS2PublishBbox3D": RENDERED_IMAGE, "ROS2PublishSemanticLabels": RENDERED_IMAGE,
             "ROS2PublishObjectIdMap": RENDERED_IMAGE, "ROS2PublishPointCloud": RTX_SENSOR,
             "ROS2PublishLaserScan": RTX_SENSOR},
-    ("omni.graph.nodes",): {"GpuInteropRenderProductEntry": RENDER_PRODUCT},
+    ("omni.graph.nodes",): {"GpuInteropRenderProductEntry": RENDER_PRODUCT, "GpuInteropCudaEntry": RENDER_PRODUCT,
+                            "RpResourceExampleHydra": "hands render-pipeline resources to Hydra (needs Kit's renderer)"},
     _RTX: {"IsaacExtractRTXSensorPointCloud": RTX_SENSOR, "IsaacComputeRTXLidarFlatScan": RTX_SENSOR,
            "IsaacCreateRTXLidarScanBuffer": RTX_SENSOR, "IsaacReadRTXLidarData": RTX_SENSOR},
 }
