@@ -360,6 +360,10 @@ def _plain(value):
         return value.pathString
     if hasattr(value, "imaginary") and hasattr(value, "real"):  # Gf.Quat*: graphflow stores x, y, z, w
         return [*(float(c) for c in value.imaginary), float(value.real)]
+    if type(value).__name__ == "TimeCode":  # Sdf.TimeCode: its number of time codes
+        return float(value.GetValue())
+    if hasattr(value, "GetRow"):  # Gf.Matrix*: graphflow stores matrices flat, row by row
+        return [float(c) for row in value for c in row]
     try:
         return [_plain(item) for item in value]
     except TypeError:
