@@ -20,7 +20,6 @@ PRIM_SERVICES = ("serves Isaac's own isaac_ros2_messages service types (prim lis
 TEST_ONLY = "Isaac's internal test node"
 EDITOR = "sets up a robot in the editor, not at run time"
 CLOSING = "fires while Kit shuts down; a graphflow run ends without a further tick to fire it in"
-EULER = "takes or gives Euler angles whose units and axis order Kit's reference pages do not state"
 TF_DRIVEN = ("places prims at the poses /tf carries by switching off their articulations, joints and rigid "
              "bodies, which graphflow's world cannot do while running")
 PRIM_EDIT = "changes the stage's prims while running, which graphflow's world does not do"
@@ -92,7 +91,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ExtractAttribute": BUNDLES, "ExtractBundle": BUNDLES, "ExtractPrim": BUNDLES, "FindPrims": None,
         "Floor": None, "GetAttributeNames": BUNDLES, "GetGraphTargetId": GRAPH_TARGETS, "GetGraphTargetPrim": None,
         "GetLocationAtDistanceOnCurve": GEOMETRY, "GetLocationAtDistanceOnCurve2": GEOMETRY,
-        "GetMatrix4Quaternion": None, "GetMatrix4Rotation": EULER, "GetMatrix4RotationMatrix": EULER,
+        "GetMatrix4Quaternion": None, "GetMatrix4Rotation": None, "GetMatrix4RotationMatrix": None,
         "GetMatrix4Scale": None, "GetMatrix4Translation": None, "GetParentPath": None, "GetParentPrims": None,
         "GetPrimDirectionVector": None, "GetPrimLocalToWorldTransform": None, "GetPrimPath": None,
         "GetPrimPaths": None, "GetPrimRelationship": None, "GetPrims": BUNDLES, "GetPrimsAtPath": None,
