@@ -36,6 +36,7 @@ MATERIALS = "reads or binds render materials, which only Kit's renderer uses"
 MANEUVER = ("animates a prim's xform ops over several ticks as an editor animation; graphflow's bodies move by "
             "physics (WritePrimLocalTransform places a free body)")
 GRAPH_VALUES = "reads any node's attribute by path through Kit's runtime store; graphflow graphs read outputs through connections"
+APPEND_ARRAY = "its input ports are not on Kit's reference pages this project could read; not carried over yet"
 NOISE = "Kit's reference pages do not state its noise function, so values would not match Kit's"
 
 _ISAAC_CORE = "isaacsim.core.nodes"
@@ -60,7 +61,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "SendMessageBusEvent": None, "Sequence": None, "SetPrimActive": PRIM_EDIT, "SwitchToken": None,
         "SyncGate": None}),
     "omni.graph.nodes": _ids("omni.graph.nodes", {
-        "Absolute": None, "Acos": None, "Add": None, "AnyZero": None, "AppendArray": None, "AppendPath": None,
+        "Absolute": None, "Acos": None, "Add": None, "AnyZero": None, "AppendArray": APPEND_ARRAY, "AppendPath": None,
         "AppendString": None, "AppendTargetPaths": None, "AppendTargets": None, "ArrayAppendValue": None,
         "ArrayFill": None, "ArrayFindValue": None, "ArrayGetSize": None, "ArrayIndex": None, "ArrayInsertValue": None,
         "ArrayLength": BUNDLES, "ArrayRemoveIndex": None, "ArrayRemoveValue": None, "ArrayReplaceValue": None,
