@@ -37,6 +37,10 @@ MANEUVER = ("animates a prim's xform ops over several ticks as an editor animati
             "physics (WritePrimLocalTransform places a free body)")
 GRAPH_VALUES = "reads any node's attribute by path through Kit's runtime store; graphflow graphs read outputs through connections"
 APPEND_ARRAY = "its input ports are not on Kit's reference pages this project could read; not carried over yet"
+LOOK_AT = ("Kit's reference does not say whether its matrix is the eye's world transform or the view "
+           "(world-to-eye) matrix, its inverse")
+GAUSSIAN = "its standard-deviation port is not on Kit's reference pages this project could read"
+NTH_ROOT = "its output port is not on Kit's reference pages this project could read"
 NOISE = "Kit's reference pages do not state its noise function, so values would not match Kit's"
 
 _ISAAC_CORE = "isaacsim.core.nodes"
@@ -88,7 +92,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ConstantUInt": None, "ConstantUInt64": None, "ConstantVector3d": None, "ConstantVector3f": None,
         "ConstructArray": None, "CopyAttribute": BUNDLES, "Cos": None, "CreateTubeTopology": GEOMETRY,
         "CrossProduct": None, "CurveToFrame": GEOMETRY, "CurveTubePositions": GEOMETRY, "CurveTubeST": GEOMETRY,
-        "Distance3D": None, "Divide": None, "DotProduct": None, "Ease": None, "EndsWith": None,
+        "Distance3D": None, "Divide": None, "DotProduct": None, "EachZero": None, "Ease": None, "EndsWith": None,
         "ExtractAttribute": BUNDLES, "ExtractBundle": BUNDLES, "ExtractPrim": BUNDLES, "FindPrims": None,
         "Floor": None, "GetAttributeNames": BUNDLES, "GetGraphTargetId": GRAPH_TARGETS, "GetGraphTargetPrim": None,
         "GetLocationAtDistanceOnCurve": GEOMETRY, "GetLocationAtDistanceOnCurve2": GEOMETRY,
@@ -105,10 +109,10 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "LengthAlongCurve": GEOMETRY, "LoopTimeline": TIMELINE, "Magnitude": None,
         "MakeArray": "Kit's older Python array maker, replaced by ConstructArray; not carried over",
         "MakeMatrix2": None, "MakeMatrix3": None, "MakeMatrix4": None, "MakeTransform": None,
-        "MakeTransformLookAt": None, "MakeVector2": None, "MakeVector3": None, "MakeVector4": None,
+        "MakeTransformLookAt": LOOK_AT, "MakeVector2": None, "MakeVector3": None, "MakeVector4": None,
         "MatrixMultiply": None, "Maximum": None, "Minimum": None, "Modulo": None, "MoveToTarget": MANEUVER,
         "MoveToTransform": MANEUVER, "Multiply": None, "Negate": None, "Noise": NOISE, "Normalize": None,
-        "NthRoot": None, "RandomBoolean": None, "RandomGaussian": None, "RandomUnitQuaternion": None,
+        "NthRoot": NTH_ROOT, "RandomBoolean": None, "RandomGaussian": GAUSSIAN, "RandomUnitQuaternion": None,
         "RandomUnitVector": None, "ReadGamepadState": None, "ReadKeyboardState": None,
         "ReadOmniGraphValue": GRAPH_VALUES, "ReadPrim": BUNDLES, "ReadPrimAttribute": None,
         "ReadPrimAttributes": BUNDLES, "ReadPrimBundle": BUNDLES, "ReadPrimLocalTransform": None,
