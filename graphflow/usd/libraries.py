@@ -19,7 +19,6 @@ PRIM_SERVICES = ("serves Isaac's own isaac_ros2_messages service types (prim lis
                  "defined in Isaac's ROS workspace, not among graphflow's service types yet")
 TEST_ONLY = "Isaac's internal test node"
 EDITOR = "sets up a robot in the editor, not at run time"
-CLOSING = "fires while Kit shuts down; a graphflow run ends without a further tick to fire it in"
 TF_DRIVEN = ("places prims at the poses /tf carries by switching off their articulations, joints and rigid "
              "bodies, which graphflow's world cannot do while running")
 PRIM_EDIT = "changes the stage's prims while running, which graphflow's world does not do"
@@ -57,7 +56,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
     "omni.graph.action": _ids("omni.graph.action", {
         "AddPrimRelationship": PRIM_EDIT, "Branch": None, "Countdown": None, "Counter": None, "Delay": None,
         "ExitApplication": None, "FlipFlop": None, "ForEach": None, "ForEachTarget": None, "ForLoop": None,
-        "Gate": None, "Multigate": None, "Multisequence": None, "OnClosing": CLOSING, "OnCustomEvent": None,
+        "Gate": None, "Multigate": None, "Multisequence": None, "OnClosing": None, "OnCustomEvent": None,
         "OnGamepadInput": None, "OnImpulseEvent": None, "OnKeyboardInput": None, "OnLoaded": None,
         "OnMessageBusEvent": None, "OnMouseInput": "needs Kit's viewport mouse (no GUI headless)",
         "OnObjectChange": None, "OnPlaybackTick": None, "OnStageEvent": None, "OnTick": None,
