@@ -14,6 +14,8 @@ from dataclasses import dataclass
 
 from graphflow.usd.node_mapping import RENDERING_NODES
 
+MOUSE = ("graphflow scripts the keyboard and gamepad (--keys, --pad) but has no mouse service yet; headless "
+         "it would never fire")
 HOST = "reads the host machine (environment, files, wall clock): not reproducible, so not carried over"
 PRIM_SERVICES = ("serves Isaac's own isaac_ros2_messages service types (prim list, attribute read/write), "
                  "defined in Isaac's ROS workspace, not among graphflow's service types yet")
@@ -58,7 +60,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ExitApplication": None, "FlipFlop": None, "ForEach": None, "ForEachTarget": None, "ForLoop": None,
         "Gate": None, "Multigate": None, "Multisequence": None, "OnClosing": None, "OnCustomEvent": None,
         "OnGamepadInput": None, "OnImpulseEvent": None, "OnKeyboardInput": None, "OnLoaded": None,
-        "OnMessageBusEvent": None, "OnMouseInput": "needs Kit's viewport mouse (no GUI headless)",
+        "OnMessageBusEvent": None, "OnMouseInput": MOUSE,
         "OnObjectChange": None, "OnPlaybackTick": None, "OnStageEvent": None, "OnTick": None,
         "OnVariableChange": None, "Once": None, "RationalTimeSyncGate": None, "SendCustomEvent": None,
         "SendMessageBusEvent": None, "Sequence": None, "SetPrimActive": PRIM_EDIT, "SwitchToken": None,
@@ -138,7 +140,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "IsaacGetViewportRenderProduct": None, "IsaacJointNameResolver": None,
         "IsaacPassthroughImagePtr": None, "IsaacReadCameraInfo": None, "IsaacReadEnvVar": HOST,
         "IsaacReadFilePath": HOST, "IsaacReadSimulationTime": None, "IsaacReadSimulationTimeAnnotator": None,
-        "IsaacReadSystemTime": HOST, "IsaacReadSystemTimeAnnotator": None, "IsaacReadWorldPose": None,
+        "IsaacReadSystemTime": None, "IsaacReadSystemTimeAnnotator": None, "IsaacReadWorldPose": None,
         "IsaacRealTimeFactor": HOST, "IsaacSetCameraOnRenderProduct": None, "IsaacSetViewportResolution": None,
         "IsaacSimulationGate": None, "IsaacTestNode": TEST_ONLY, "IsaacTimeSplitter": None,
         "OgnIsaacRunOneSimulationFrame": None, "OgnIsaacScaleToFromStageUnit": None, "OnPhysicsStep": None}),
