@@ -140,7 +140,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "IsaacGetViewportRenderProduct": None, "IsaacJointNameResolver": None,
         "IsaacPassthroughImagePtr": None, "IsaacReadCameraInfo": None, "IsaacReadEnvVar": HOST,
         "IsaacReadFilePath": HOST, "IsaacReadSimulationTime": None, "IsaacReadSimulationTimeAnnotator": None,
-        "IsaacReadSystemTime": None, "IsaacReadSystemTimeAnnotator": None, "IsaacReadWorldPose": None,
+        "IsaacReadSystemTime": None, "IsaacReadSystemTimeAnnotator": None, "IsaacReadTimes": None, "IsaacReadWorldPose": None,
         "IsaacRealTimeFactor": HOST, "IsaacSetCameraOnRenderProduct": None, "IsaacSetViewportResolution": None,
         "IsaacSimulationGate": None, "IsaacTestNode": TEST_ONLY, "IsaacTimeSplitter": None,
         "OgnIsaacRunOneSimulationFrame": None, "OgnIsaacScaleToFromStageUnit": None, "OnPhysicsStep": None}),
