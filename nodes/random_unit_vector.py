@@ -9,7 +9,7 @@ SPEC = NodeSpec(
     version=1,
     description=(
         "On each execIn, outputs:random = a unit vector uniformly distributed on the sphere and execOut fires. useSeed: the draws follow inputs:seed; "
-        "otherwise the run's seed (graphflow run --seed), so a run repeats exactly; isNoise: the same value "
+        "otherwise the run's seed (graphflow run --seed) and the node's name, so a run repeats exactly; isNoise: the same value "
         "for a given seed every time. (Kit's generator is not published: values differ from Kit's.)"),
     categories=("math:operator",),
     ui_name="Random Unit Vector",
@@ -25,8 +25,6 @@ SPEC = NodeSpec(
     ),
     state=(
         Attribute("draws", "int", default=0, description="Values drawn so far"),
-        Attribute("seed", "uint64", default=0, description="The run-seeded generator's seed"),
-        Attribute("seeded", "bool", default=False, description="Whether the run-seeded seed is drawn"),
     ),
 )
 

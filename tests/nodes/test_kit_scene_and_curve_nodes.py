@@ -86,13 +86,18 @@ def test_random_draws_follow_the_seed_and_noise_repeats():
     assert all(math.isclose(sum(c * c for c in q), 1.0) for q in quaternions)
 
 
-def test_random_without_a_seed_repeats_under_the_runs_seed():
-    import random
+def test_random_without_a_seed_follows_the_runs_seed():
+    from graphflow.seeding import seed_everything
 
-    random.seed(11)
-    run_a = _draws("RandomBoolean", 30)
-    random.seed(11)
-    assert _draws("RandomBoolean", 30) == run_a
+    try:
+        seed_everything(11)
+        run_a = _draws("RandomUnitVector", 30)
+        seed_everything(11)
+        assert _draws("RandomUnitVector", 30) == run_a
+        seed_everything(12)
+        assert _draws("RandomUnitVector", 30) != run_a
+    finally:
+        seed_everything(0)
 
 
 def test_any_zero_and_each_zero_follow_the_references_examples():
