@@ -5,6 +5,8 @@ run ends, so execOut fires once after the last tick (the tick limit, the time
 limit or a StopRun), with the world as the last step left it and no further
 physics step; downstream nodes compute as on any tick (a print, a ROS 2
 publish, a variable write the checks read). A run that fails does not fire it.
+A --trace file records ticks, so the closing pass is not in it; its log lines
+print as usual.
 """
 from graphflow.spec import Attribute, NodeSpec
 from graphflow.types import ExecState
