@@ -85,3 +85,48 @@ class FrameSampler:
             lines.append([event.tick, event.node, event.level, event.message])
         self._logged_tick = instance.tick_count
         return lines[::-1]
+
+
+def merge_frames(older: dict, newer: dict) -> dict:
+    """One frame saying what two consecutive frames say: the newer state, the changes of both, every log line."""
+    merged = {**older, **newer, "outputs": {**older["outputs"], **newer["outputs"]},
+              "computed": sorted({*older["computed"], *newer["computed"]}), "poses": {**older["poses"], **newer["poses"]},
+              "log": (older["log"] + newer["log"])[-MAX_LOG_LINES:]}
+    grippers = {path: dict(fields) for path, fields in older["grippers"].items()}
+    for path, fields in newer["grippers"].items():
+        grippers.setdefault(path, {}).update(fields)
+    merged["grippers"] = grippers
+    return merged
+
+
+class Outbox:
+    """Messages waiting for a page's socket, in order; a frame that finds the last one still waiting merges into it.
+
+    Back-pressure without blocking the run: a socket slower than the frames (a busy page, a slow
+    link) gets fewer, fuller frames, and the messages waiting never grow beyond one frame.
+    Used on the server's event loop only (the run's thread hands messages over with ``call_soon_threadsafe``).
+    """
+
+    def __init__(self):
+        import asyncio
+        from collections import deque
+
+        self._waiting: deque = deque()
+        self._ready = asyncio.Event()
+
+    def put(self, message: dict) -> None:
+        if message.get("type") == "frame" and self._waiting and self._waiting[-1].get("type") == "frame":
+            self._waiting[-1] = merge_frames(self._waiting[-1], message)
+        else:
+            self._waiting.append(message)
+        self._ready.set()
+
+    def __len__(self) -> int:
+        return len(self._waiting)
+
+    async def take(self) -> dict:
+        """The oldest waiting message, once there is one."""
+        while not self._waiting:
+            self._ready.clear()
+            await self._ready.wait()
+        return self._waiting.popleft()
