@@ -124,8 +124,15 @@ def build_app(session: Session, hosts: set[str]) -> Guard:
         return JSONResponse({"path": session.folder.relative(path), "layout": editing.drawn_layout(opened["data"], path),
                              **opened})
 
+    watching: dict = {}   # graph path -> graphflow.watching.WatchedFiles, kept between the page's polls
+
     async def watched(request: Request):
-        return JSONResponse(editing.watched_revision(session.folder.resolve(request.query_params.get("path", ""))))
+        from graphflow.watching import WatchedFiles, graph_files
+
+        path = session.folder.resolve(request.query_params.get("path", ""))
+        if path not in watching:   # off the event loop: the first look opens the stage's layers
+            watching[path] = await asyncio.to_thread(WatchedFiles, lambda: graph_files(path))
+        return JSONResponse(await asyncio.to_thread(editing.watched_revision, path, watching[path]))
 
     async def check(request: Request):
         body = await _body(request)
