@@ -4,8 +4,9 @@ Headless: graphs/ur10_pick_place.json as ``graphflow run`` runs it (the checked 
 no recording), ticks per wall-clock second over the first TICKS ticks. Studio: the same graph started
 from ``graphflow studio`` (a subprocess) at max speed with one watcher: a websocket client, headless
 Chromium showing the page, and the same page not drawn (its root ``display: none``: no layout or
-painting, its scripts still take every frame and update the page). A watcher's rate is ticks per second between the first frame past
-tick 0 and the first frame at TICKS, both as the watcher receives them (latency cancels). Each repeat
+painting, its scripts still take every frame and update the page). A watcher's rate is TICKS over the
+wall time from play (the page's click; for the socket, the frame answering play) to the first frame at
+TICKS as the watcher receives it: the frame interval and the page's delay count against the studio. Each repeat
 measures headless then live (play, then reset for the next): ratio = median over repeats of live /
 headless of the same repeat (target >= 0.90 with one browser watching). With a browser: the CPU
 Chromium used during the drawn and undrawn runs (CPU-seconds per wall second, of this machine's
@@ -65,11 +66,10 @@ class _Server:
 
 
 def _rate_of_frames(frames: list[tuple[float, int]], ticks: int) -> float:
-    """Ticks per second from the first frame past tick 0 to the first frame at *ticks*."""
-    moving = [(at, tick) for at, tick in frames if tick > 0]
-    first_time, first_tick = moving[0]
-    last_time, last_tick = next((at, tick) for at, tick in moving if tick >= ticks)
-    return (last_tick - first_tick) / (last_time - first_time)
+    """Ticks per second from the start (the last sighting of tick 0) to the first frame at *ticks*."""
+    first_time = max(at for at, tick in frames if tick == 0)
+    last_time, last_tick = next((at, tick) for at, tick in frames if tick >= ticks)
+    return last_tick / (last_time - first_time)
 
 
 class _SocketWatcher:
@@ -112,7 +112,7 @@ class _PageWatcher:
     def rate(self, ticks: int) -> float:
         frames = self.page.evaluate("""async (ticks) => {
             const bar = () => document.querySelector('[data-testid=live-bar]');
-            const seen = [];
+            const seen = [[performance.now() / 1000, 0]];
             document.querySelector('[data-action=play]').click();
             await new Promise((resolve) => {
               new MutationObserver((records, observer) => {
