@@ -169,7 +169,7 @@ class Watcher:
 
 def _changes(before: dict, now: dict) -> list[str]:
     """The files that changed, appeared or went between two states (a folder's by the files added to or gone from it)."""
-    changed = []
+    changed: list[str] = []
     for path, state in now.items():
         old = before.get(path)
         if state == old:

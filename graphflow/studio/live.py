@@ -172,8 +172,13 @@ class LiveRun:
         self._load()
 
     def _save(self, name: str, path: Path) -> None:
+        """The trace or report of the ticks so far, made again from the input delivered; a failure is told, the run goes on."""
         inputs = LiveInputs(self.checked.document, str(self.path), self.keys.timeline(), self.pad.timeline())
-        save_replayed(inputs, name, path, ticks=self.simulation.tick_count, ended=self.ended is not None)
+        try:
+            save_replayed(inputs, name, path, ticks=self.simulation.tick_count, ended=self.ended is not None)
+        except GraphflowError as error:   # the stage went from disk since the run started, the folder is read-only...
+            self.publish({"type": "error", "message": f"{path.name} not saved: {error}"})
+            return
         self.publish({"type": "saved", "what": name, "path": path.name})
 
     def _frame(self) -> None:
