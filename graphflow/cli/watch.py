@@ -48,7 +48,8 @@ def watch(run_once: Callable[[], int], watcher: Watcher, *, title: str, after_ru
     *runs* stops after that many runs, returning the last exit code (tests; None: until interrupted).
     """
     say = say or (lambda text: print(text, file=sys.stderr, flush=True))
-    count, changed, code = 0, [], EXIT_OK
+    count, code = 0, EXIT_OK
+    changed: list[str] = []
     while runs is None or count < runs:
         count += 1
         cause = "first run" if not changed else f"changed: {', '.join(map(_shown, changed))}"
