@@ -135,7 +135,7 @@ class _PageWatcher:
         return [tuple(frame) for frame in frames]
 
     def reset(self) -> None:
-        self.page.click("[data-action=reset]")
+        self.page.evaluate("document.querySelector('[data-action=reset]').click()")   # clickable undrawn too
         self.page.wait_for_function("document.querySelector('[data-testid=live-bar]').dataset.tick === '0'", polling=50,
                                     timeout=60000)
 
