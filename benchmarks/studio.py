@@ -93,11 +93,12 @@ class _SocketWatcher:
 
     def play(self, ticks: int) -> list[tuple[float, int]]:
         """Play at max speed until a frame at *ticks*: (arrival time, tick) of every frame."""
-        frames = []
         self.socket.send(json.dumps({"command": "play"}))
-        while not frames or frames[-1][1] < ticks:
-            message = self._until("frame")
-            frames.append((time.perf_counter(), message["tick"]))
+        while not (message := self._until("frame"))["playing"]:
+            pass   # frames sent before play was taken
+        frames = [(time.perf_counter(), message["tick"])]
+        while frames[-1][1] < ticks:
+            frames.append((time.perf_counter(), self._until("frame")["tick"]))
         return frames
 
     def reset(self) -> None:
