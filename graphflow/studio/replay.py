@@ -16,6 +16,23 @@ from pathlib import Path
 from graphflow.document import GraphDocument
 
 
+@contextlib.contextmanager
+def generators_kept():
+    """The replay seeds the global generators as every run does; the live run it interrupts keeps its own draws."""
+    import random
+    import sys
+
+    python = random.getstate()
+    numpy_random = sys.modules.get("numpy.random")
+    numpy_state = numpy_random.get_state() if numpy_random is not None else None
+    try:
+        yield
+    finally:
+        random.setstate(python)
+        if numpy_random is not None:
+            numpy_random.set_state(numpy_state)
+
+
 @dataclass(frozen=True)
 class LiveInputs:
     """What a live run was fed: the graph as loaded, and the browser's key and pad timelines so far."""
@@ -37,6 +54,7 @@ def save_replayed(inputs: LiveInputs, what: str, path: Path, *, ticks: int, ende
     scripted = replace(ScriptedInputs.of_document(document), keys=inputs.keys, pad=inputs.pad)
     checked = CheckedRun(document, source=inputs.source, inputs=scripted)
     with contextlib.ExitStack() as closing:
+        closing.enter_context(generators_kept())
         closing.callback(checked.close)
         checked.preflight()
         simulation = checked.start()
