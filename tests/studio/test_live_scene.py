@@ -44,9 +44,9 @@ def frames_until(socket, tick):
     socket.send(json.dumps({"command": "pause"}))
     receive(socket, frames, lambda frame: not frame["playing"])
     paused = frames[-1]["tick"]
-    for _ in range(STEPS):   # one frame a tick: the cube, carried now, moves on each
+    for step in range(1, STEPS + 1):   # one frame a tick (each awaited: none merged), the cube carried now
         socket.send(json.dumps({"command": "step"}))
-    receive(socket, frames, lambda frame: frame["tick"] == paused + STEPS)
+        receive(socket, frames, lambda frame: frame["tick"] == paused + step)
     socket.send(json.dumps({"command": "saveTrace", "path": "live.jsonl"}))
     while json.loads(socket.recv(timeout=120))["type"] != "saved":
         pass
