@@ -1,8 +1,8 @@
 """The live run's frames, sampled from the simulation's latest state when one is due (never a tick at a time).
 
 A frame says what changed since the previous frame: the outputs whose value differs (their value
-now), the nodes that computed (compute counts moved), gripper fields that differ, the poses of moving
-bodies that moved, and the log lines logged since. Sampling costs the run nothing between frames:
+now), the nodes that computed (compute counts moved), gripper fields that differ and the log lines
+logged since; the scene's poses and the lanes' changes are ``graphflow.studio.frame_scene``'s part. Sampling costs the run nothing between frames:
 no listener runs per tick or per compute, and no per-tick history is kept (the trace of a live run is
 made again, identically, when the page saves it: ``graphflow.studio.replay``).
 """
@@ -40,14 +40,7 @@ class FrameSampler:
         description = getattr(simulation.world, "description", None)
         self._unused = {g.path for g in getattr(description, "surface_grippers", ())} - set(used_grippers(simulation))
         self._grippers: dict[str, dict] = {}
-        bodies = dict(getattr(description, "bodies", {}) or {})
-        self._moving = [path for path, body in bodies.items() if body.kind != "static"]
-        self._poses: dict[str, list[float]] = {path: self._pose(path) for path in self._moving}
         self._logged_tick = instance.tick_count
-
-    def _pose(self, path: str) -> list[float]:
-        (x, y, z), (qx, qy, qz, qw) = self.simulation.world.prim_pose(path)
-        return [float(x), float(y), float(z), float(qx), float(qy), float(qz), float(qw)]
 
     def frame(self) -> dict:
         """The differences since the last call, as the ``frame`` message's fields."""
@@ -70,12 +63,7 @@ class FrameSampler:
             if changed:
                 grippers[path] = changed
             self._grippers[path] = fields
-        poses = {}
-        for path in self._moving:
-            pose = self._pose(path)
-            if pose != self._poses[path]:
-                poses[path] = self._poses[path] = pose
-        return {"outputs": outputs, "computed": computed, "grippers": grippers, "poses": poses, "log": self._log(instance)}
+        return {"outputs": outputs, "computed": computed, "grippers": grippers, "log": self._log(instance)}
 
     def _log(self, instance) -> list:
         """Lines logged since the last frame, oldest first: [tick, node, level, message]."""
@@ -91,7 +79,7 @@ class FrameSampler:
 def merge_frames(older: dict, newer: dict) -> dict:
     """One frame saying what two consecutive frames say: the newer state, the changes of both, every log line."""
     merged = {**older, **newer, "outputs": {**older["outputs"], **newer["outputs"]},
-              "computed": sorted({*older["computed"], *newer["computed"]}), "poses": {**older["poses"], **newer["poses"]},
+              "computed": sorted({*older["computed"], *newer["computed"]}),
               "log": (older["log"] + newer["log"])[-MAX_LOG_LINES:]}
     grippers = {path: dict(fields) for path, fields in older["grippers"].items()}
     for path, fields in newer["grippers"].items():

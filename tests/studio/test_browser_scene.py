@@ -1,5 +1,4 @@
 """The studio's live run in headless Chromium: the report's 3D scene and lanes, fed from the live frames."""
-import json
 import re
 import shutil
 
@@ -77,35 +76,3 @@ def test_a_live_run_moves_the_cube_in_the_scene_and_draws_the_gripper_lanes(pick
     closed_spans = [title for title in status_titles if title.startswith(f"{GRIPPER.split('/')[-1]} status: Closed")]
     assert closed_spans, status_titles
     assert re.search(rf"\(ticks {closed_tick}–", closed_spans[0]), (closed_spans, closed_tick)
-
-
-def as_sampled_state(message: str) -> str:
-    """A frame as a server that sends only the state sampled at the frame would: poses, grippers, outputs, no parts."""
-    frame = json.loads(message)
-    if frame.get("type") == "frame":
-        scene = frame.pop("scene")
-        frame.pop("lanes")
-        frame["poses"] = {path: pose for path, (_tick, pose) in scene["poses"].items()}
-    return json.dumps(frame)
-
-
-def test_the_scene_and_lanes_also_follow_frames_that_hold_only_the_sampled_state(pick_place):
-    """The page draws from a frame without scene and lanes parts too (each change then at its frame's tick)."""
-    def rewrite(route):
-        server = route.connect_to_server()
-        server.on_message(lambda message: route.send(as_sampled_state(message)))
-
-    with browser() as chromium:
-        page = open_studio(chromium, pick_place)
-        page.route_web_socket(re.compile(r".*/api/live\?.*"), rewrite)
-        page.click("[data-action=live]")
-        page.wait_for_selector("[data-testid=live-scene] canvas")
-        start = cube_position(page)
-        page.select_option("[data-field=speed]", "null")
-        page.click("[data-action=play]")
-        page.wait_for_function(f"window.graphflowStudio.bodyPosition({CUBE!r})[2] > {start[2] + 0.05}", timeout=180000)
-        page.click("[data-action=pause]")
-        page.wait_for_selector("[data-testid=live-bar][data-playing=false]")
-        titles = page.locator(f"[data-testid='status:{GRIPPER}'] title").all_text_contents()
-        assert any(title.startswith(f"{GRIPPER.split('/')[-1]} status: Closed") for title in titles), titles
-        assert not page.errors, page.errors

@@ -5,13 +5,13 @@ from graphflow.studio.frames import Outbox, merge_frames
 
 
 def frame(tick, **fields):
-    return {"type": "frame", "tick": tick, "playing": True, "outputs": {}, "computed": [], "grippers": {}, "poses": {},
+    return {"type": "frame", "tick": tick, "playing": True, "outputs": {}, "computed": [], "grippers": {},
             "log": [], **fields}
 
 
 def test_two_frames_merge_into_the_newer_state_with_the_changes_and_log_lines_of_both():
     older = frame(3, outputs={"a.x": 1.0, "b.y": 2.0}, computed=["b", "a"], grippers={"/g": {"status": "Open", "force": None}},
-                  poses={"/box": [0, 0, 1, 0, 0, 0, 1]}, log=[[2, "a", "info", "one"]])
+                  log=[[2, "a", "info", "one"]])
     newer = frame(5, outputs={"a.x": 4.0}, computed=["c"], grippers={"/g": {"status": "Closing"}}, log=[[5, "c", "info", "two"]],
                   playing=False)
     merged = merge_frames(older, newer)
@@ -19,7 +19,6 @@ def test_two_frames_merge_into_the_newer_state_with_the_changes_and_log_lines_of
     assert merged["outputs"] == {"a.x": 4.0, "b.y": 2.0}
     assert merged["computed"] == ["a", "b", "c"]
     assert merged["grippers"] == {"/g": {"status": "Closing", "force": None}}
-    assert merged["poses"] == {"/box": [0, 0, 1, 0, 0, 0, 1]}
     assert merged["log"] == [[2, "a", "info", "one"], [5, "c", "info", "two"]]
     assert older["grippers"] == {"/g": {"status": "Open", "force": None}}   # the frames merged are left as they were
 

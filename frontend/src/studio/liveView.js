@@ -11,20 +11,8 @@ function appendAfter(list, entries) {
   for (const entry of entries) if (list.length === 0 || list[list.length - 1][0] < entry[0]) list.push(entry);
 }
 
-/** A frame's scene and lanes parts: as the server sends them (frame_scene.py), or, from a frame that holds only
- * the state sampled when it was made (poses, gripper fields, outputs), that state at the frame's tick. */
-function parts(view, frame) {
-  if (frame.scene && frame.lanes) return frame;
-  const at = (value) => [[frame.tick, value]];
-  const phases = Object.fromEntries(view.phases.filter((key) => key in frame.outputs).map((key) => [key, at(frame.outputs[key])]));
-  const grippers = Object.fromEntries(Object.entries(frame.grippers || {}).map(([path, fields]) =>
-    [path, Object.fromEntries(Object.entries(fields).map(([name, value]) => [name, at(value)]))]));
-  const poses = Object.fromEntries(Object.entries(frame.poses || {}).map(([path, pose]) => [path, [frame.tick, pose]]));
-  return { scene: { poses, limits: {} }, lanes: { phases, grippers } };
-}
-
 export function withFrame(view, frame, pinned) {
-  const { scene, lanes } = parts(view, frame);
+  const { scene, lanes } = frame;   // frame_scene.py's parts: poses that moved, every lane change with its tick
   for (const [path, sample] of Object.entries(scene.poses)) appendAfter(view.poses[path] ||= [], [sample]);
   for (const [gripper, limits] of Object.entries(scene.limits)) {
     view.limits[gripper] = Object.entries(limits).map(([name, value]) => ({ name, value }));
