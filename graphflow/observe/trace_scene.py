@@ -1,6 +1,6 @@
 """The trace's scene section (format version 2): what a run report needs to redraw a run.
 
-Written by ``graphflow.trace.TraceRecorder`` beside its version-1 fields, so the
+Written by ``graphflow.observe.recorder.TraceRecorder`` beside its version-1 fields, so the
 recorder itself stays small: the header's ``scene`` (every body's shapes and
 starting pose, which bodies move, the pose sampling rate), and per tick the
 nodes that computed, the moving bodies' poses (every ``poseEvery``-th tick,
@@ -45,7 +45,7 @@ def _shape(shape) -> dict:
 
 
 class SceneSection:
-    """Collects the scene fields of a trace for one simulation; ``header()`` once, ``record()`` after each tick."""
+    """Collects the scene fields of a trace for one simulation; ``header()`` once, ``capture()`` after each tick."""
 
     def __init__(self, simulation, pose_every: int = POSE_EVERY):
         self.world = simulation.world
@@ -55,7 +55,7 @@ class SceneSection:
         self.bodies = dict(getattr(description, "bodies", {}) or {})
         self.moving = [path for path, body in self.bodies.items() if body.kind != "static"]
         self._poses: dict[str, list[float]] = {}
-        self._counts = list(self.instance.compute_counts)
+        self._counts = tuple(self.instance.compute_counts)
         self._gripper_status: dict[str, str] = {}
 
     def header(self) -> dict:
@@ -72,27 +72,34 @@ class SceneSection:
         links = sorted({path for articulation in description.articulations for path in articulation.bodies})
         return {"scene": {"upAxis": description.up_axis, "poseEvery": self.pose_every, "bodies": bodies, "links": links}}
 
-    def record(self, manager) -> dict:
-        """This tick's ``computed`` nodes, sampled ``poses`` that changed and the ``rays`` of closes that began."""
+    def capture(self, manager) -> tuple:
+        """What ``encode`` needs of this tick, read now: compute counts, sampled body poses, rays of closes that began."""
+        counts = tuple(self.instance.compute_counts)
+        poses = None
+        if self.moving and self.instance.tick_count % self.pose_every == 0:
+            poses = self.world.body_poses(self.moving)
+        rays = self._rays_on_close(manager) if manager is not None else None
+        return counts, poses, rays
+
+    def encode(self, captured: tuple) -> dict:
+        """A tick's ``computed`` nodes, sampled ``poses`` that changed and ``rays``, from its ``capture``."""
+        counts, sampled, rays = captured
         record: dict[str, Any] = {}
-        counts = self.instance.compute_counts
         computed = [node.name for node, before, now in zip(self.instance.compiled.nodes, self._counts, counts)
                     if now != before]
-        self._counts = list(counts)
+        self._counts = counts
         if computed:
             record["computed"] = computed
-        if self.moving and self.instance.tick_count % self.pose_every == 0:
+        if sampled is not None:
             poses = {}
-            for path in self.moving:
-                pose = _pose_list(self.world.prim_pose(path))
+            for path, pose in zip(self.moving, sampled):
+                pose = _pose_list(pose)
                 if pose != self._poses.get(path):
                     poses[path] = self._poses[path] = pose
             if poses:
                 record["poses"] = poses
-        if manager is not None:
-            rays = self._rays_on_close(manager)
-            if rays:
-                record["rays"] = rays
+        if rays:
+            record["rays"] = rays
         return record
 
     def _rays_on_close(self, manager) -> dict:

@@ -1,0 +1,233 @@
+"""Recording a run's trace (docs/trace.md): each tick is captured cheaply, then encoded as its record.
+
+Capturing keeps what cannot wait (values a node may overwrite, the gripper's force,
+sampled body poses, this tick's pulses and log lines) as plain references; encoding
+turns a capture into the record of changes. A trace written to a stream encodes
+every tick as it ends; a run report keeps its records in memory and encodes the
+captured ticks only when they are read (``flush``), so the run itself pays only for
+the capture. Both go through the same ``_encode``: the records are identical.
+"""
+from __future__ import annotations
+
+from typing import IO, Any, Sequence
+
+from graphflow.observe.trace import (
+    TRACE_FORMAT,
+    TRACE_VERSION,
+    dumps_record,
+    loaded_versions,
+    phase_outputs,
+    published_topics,
+    same_path_text,
+    sample_grippers,
+    surface_gripper_manager,
+    to_json_value,
+    used_grippers,
+)
+from graphflow.types import ExecState
+
+_STATE_SUFFIX = {ExecState.ENABLED: "", ExecState.ENABLED_AND_PUSH: ":push",
+                 ExecState.LATENT_PUSH: ":latentPush", ExecState.LATENT_FINISH: ":latentFinish"}
+
+
+class TraceRecorder:
+    """Writes the trace of a simulation's first graph instance to a text stream: a header, then a line per tick.
+
+    ``TraceRecorder(simulation, stream)`` writes the header and adds itself to the simulation's
+    listeners: it collects exec pulses as nodes compute (``on_compute``) and captures each tick after
+    it ran (``on_tick``). The stream stays open: whoever opened it closes it. *records*, a list, also
+    keeps every record as a dict (the run report reads them so, without encoding JSON); without a
+    stream the ticks are encoded into it only when ``flush()`` asks.
+    """
+
+    def __init__(self, simulation, stream: IO[str] | None, *, graph: str | None = None, records: list | None = None,
+                 randomized: Sequence[dict] = ()):
+        from graphflow.observe.trace_scene import SceneSection
+
+        self.simulation = simulation
+        self.stream = stream
+        self.records = records
+        self.instance = simulation.instance
+        self._pulses: list[str] = []
+        self._pulse_names: dict[tuple, str] = {}   # (node, exec output, state) -> its pulse text
+        self._captured: list[tuple] = []           # ticks captured but not yet encoded (no stream)
+        self._grippers: dict[str, dict] = {}
+        nodes = self.instance.compiled.nodes
+        databases = [self.instance.database(node.name) for node in nodes]
+        exec_names = [frozenset(a.name for a in node.spec.exec_outputs) for node in nodes]
+        slots = [(database.outputs.__dict__, name, f"{node.name}.{name}")
+                 for node, database, names in zip(nodes, databases, exec_names)
+                 for name in database.outputs.__dict__ if name not in names]
+        self._sources = [(outputs, name) for outputs, name, _key in slots]   # where each data output lives
+        self._keys = [key for _outputs, _name, key in slots]
+        self._raw: list[Any] = [_MISSING] * len(slots)   # each output as last encoded, to skip unchanged ones
+        self._outputs = {key: to_json_value(outputs[name]) for outputs, name, key in slots}
+        self._scene = SceneSection(simulation)
+        description = getattr(simulation.world, "description", None)
+        self._used_grippers = used_grippers(simulation)
+        self._unused = {g.path for g in getattr(description, "surface_grippers", ())} - set(self._used_grippers)
+        self._write_header(graph, list(randomized))
+        simulation.add_listener(self)
+
+    def on_compute(self, instance, node_name: str, fired: list[str], db) -> None:
+        if instance is not self.instance or not fired:
+            return
+        outputs, names = db.outputs.__dict__, self._pulse_names
+        for name in fired:
+            key = (node_name, name, outputs[name])
+            text = names.get(key)
+            if text is None:
+                text = names[key] = f"{node_name}.{name}{_STATE_SUFFIX[ExecState(outputs[name])]}"
+            self._pulses.append(text)
+
+    def on_tick(self, simulation, tick: int) -> None:
+        """Capture the tick that just ran; write its record now when there is a stream."""
+        captured = self._capture()
+        if self.stream is None:
+            self._captured.append(captured)
+        else:
+            self._emit(self._encode(captured))
+
+    def flush(self) -> None:
+        """Encode the ticks captured since the last flush into ``records`` (a recorder without a stream)."""
+        captured, self._captured = self._captured, []
+        for tick in captured:
+            self._emit(self._encode(tick))
+
+    def _capture(self) -> tuple:
+        """What the tick's record is made of, read now: later ticks overwrite it."""
+        instance, world = self.instance, self.simulation.world
+        pulses, self._pulses = self._pulses, []
+        values = [outputs[name] for outputs, name in self._sources]
+        for index, value in enumerate(values):
+            kind = type(value)
+            if kind not in _SCALARS and not (kind is tuple and _scalar_items(value)):
+                values[index] = to_json_value(value)   # a list or array a node may change in place: a copy
+        logs = []
+        for event in reversed(instance.events):   # this tick's lines are the newest
+            if event.tick != instance.tick_count:
+                break
+            logs.append({"node": event.node, "level": event.level, "message": event.message})
+        manager = surface_gripper_manager(world)
+        return (instance.tick_count, world.time, pulses, values, sample_grippers(world), published_topics(world),
+                logs[::-1], self._scene.capture(manager))
+
+    def _encode(self, captured: tuple) -> dict:
+        """The tick's record: pulses, changed outputs, changed gripper fields, topics, log lines, scene fields."""
+        tick, time, pulses, values, samples, topics, logs, scene = captured
+        record: dict[str, Any] = {"tick": tick, "t": time}
+        if pulses:
+            record["pulses"] = pulses
+        changed = self._changed_outputs(values)
+        if changed:
+            record["outputs"] = changed
+        grippers = {}
+        for path, sample in samples.items():
+            if path in self._unused:
+                continue    # a stage gripper the graph does not use
+            fields = sample.fields()
+            previous = self._grippers.get(path, {})
+            delta = {key: value for key, value in fields.items() if _changed(previous.get(key, _MISSING), value)}
+            if delta:
+                grippers[path] = delta
+            self._grippers[path] = fields
+        if grippers:
+            record["grippers"] = grippers
+        if topics:
+            record["topics"] = topics
+        if logs:
+            record["log"] = logs
+        record.update(self._scene.encode(scene))
+        return record
+
+    def _emit(self, record: dict) -> None:
+        if self.records is not None:
+            self.records.append(record)
+        if self.stream is not None:
+            self.stream.write(dumps_record(record) + "\n")
+
+    def _changed_outputs(self, values: list) -> dict[str, Any]:
+        """Outputs whose value changed; an immutable value equal to the last one is skipped unconverted."""
+        changed, written, last_raw, keys = {}, self._outputs, self._raw, self._keys
+        for index, raw in enumerate(values):
+            previous = last_raw[index]
+            kind = type(raw)
+            if kind is type(previous) and _unchanged(kind, previous, raw):
+                continue
+            last_raw[index] = raw
+            key = keys[index]
+            if kind in _SCALARS:   # the common case, compared without the general walk
+                old = written.get(key, _MISSING)
+                if old is _MISSING or (old != raw and not (raw != raw and old != old)):   # NaN stays NaN
+                    changed[key] = written[key] = raw
+                continue
+            value = to_json_value(raw)
+            if _changed(written.get(key, _MISSING), value):
+                changed[key] = written[key] = value
+        return changed
+
+    def _write_header(self, graph: str | None, randomized: list[dict]) -> None:
+        document = self.simulation.document
+        world = self.simulation.world
+        compiled = self.instance.compiled
+        header = {
+            "format": TRACE_FORMAT,
+            "version": TRACE_VERSION,
+            "graph": same_path_text(graph if graph is not None else document.source),
+            "description": document.description,
+            "stage": document.settings.get("stage"),
+            "timeStep": world.time_step,
+            "nodes": {node.name: node.spec.id for node in compiled.nodes},
+            "outputs": dict(self._outputs),   # a copy: the recorder updates its own as outputs change
+            "phases": phase_outputs(compiled),
+            "grippers": self._used_grippers,
+            "versions": loaded_versions(),
+            **self._scene.header(),
+        }
+        if randomized:   # only a randomized run has it, so other traces stay as they were
+            header["randomized"] = randomized
+        self._emit(header)
+
+
+_MISSING = object()
+_SCALARS = (float, int, str, bool, type(None))
+_SCALAR_TYPES = frozenset(_SCALARS)
+
+
+def _scalar_items(value: tuple) -> bool:
+    """A tuple of scalars only: immutable, so capturing the reference captures the value."""
+    return set(map(type, value)) <= _SCALAR_TYPES
+
+
+def _unchanged(kind: type, previous: Any, raw: Any) -> bool:
+    """The same immutable value as last tick: a scalar, or a tuple of scalars (never a list or an array a node
+    may mutate in place)."""
+    if kind in _SCALARS:
+        return previous is raw or previous == raw
+    if kind is not tuple:
+        return False
+    try:
+        if not (previous is raw or previous == raw):
+            return False
+    except ValueError:   # an array inside: its truth is ambiguous
+        return False
+    return all(type(item) in _SCALARS for item in raw)
+
+
+def _changed(previous: Any, value: Any) -> bool:
+    """Different as written to the trace (so a NaN that stays NaN is no change)."""
+    if previous is _MISSING:
+        return True
+    return previous != value and not _same_but_nan(previous, value)
+
+
+def _same_but_nan(previous: Any, value: Any) -> bool:
+    """Unequal values that are written alike: NaN where the other has NaN (plain JSON values only)."""
+    if isinstance(previous, float) and isinstance(value, float):
+        return previous != previous and value != value
+    if isinstance(previous, list) and isinstance(value, list):
+        return len(previous) == len(value) and all(a == b or _same_but_nan(a, b) for a, b in zip(previous, value))
+    if isinstance(previous, dict) and isinstance(value, dict):
+        return list(previous) == list(value) and all(
+            previous[key] == value[key] or _same_but_nan(previous[key], value[key]) for key in previous)
+    return False
