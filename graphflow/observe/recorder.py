@@ -17,13 +17,13 @@ from graphflow.observe.trace import (
     dumps_record,
     loaded_versions,
     phase_outputs,
-    published_topics,
     same_path_text,
     sample_grippers,
     surface_gripper_manager,
     to_json_value,
     used_grippers,
 )
+from graphflow.ros2.bus import published_this_tick
 from graphflow.types import ExecState
 
 _STATE_SUFFIX = {ExecState.ENABLED: "", ExecState.ENABLED_AND_PUSH: ":push",
@@ -52,6 +52,7 @@ class TraceRecorder:
         self._pulse_names: dict[tuple, str] = {}   # (node, exec output, state) -> its pulse text
         self._captured: list[tuple] = []           # ticks captured but not yet encoded (no stream)
         self._grippers: dict[str, dict] = {}
+        self._manager = None   # the world's gripper manager, once a node has made it
         nodes = self.instance.compiled.nodes
         databases = [self.instance.database(node.name) for node in nodes]
         exec_names = [frozenset(a.name for a in node.spec.exec_outputs) for node in nodes]
@@ -95,34 +96,46 @@ class TraceRecorder:
             self._emit(self._encode(tick))
 
     def _capture(self) -> tuple:
-        """What the tick's record is made of, read now: later ticks overwrite it."""
+        """What the tick's record is made of, read now (later ticks overwrite it).
+
+        Tuples of plain values wherever possible: the garbage collector stops tracking those, so a long
+        run's captures do not slow its collections down."""
         instance, world = self.instance, self.simulation.world
-        pulses, self._pulses = self._pulses, []
+        pulses = tuple(self._pulses)
+        self._pulses.clear()
         values = [outputs[name] for outputs, name in self._sources]
         for index, value in enumerate(values):
             kind = type(value)
             if kind not in _SCALARS and not (kind is tuple and _scalar_items(value)):
                 values[index] = to_json_value(value)   # a list or array a node may change in place: a copy
-        logs = []
-        for event in reversed(instance.events):   # this tick's lines are the newest
-            if event.tick != instance.tick_count:
-                break
-            logs.append({"node": event.node, "level": event.level, "message": event.message})
-        manager = surface_gripper_manager(world)
-        return (instance.tick_count, world.time, pulses, values, sample_grippers(world), published_topics(world),
-                logs[::-1], self._scene.capture(manager))
+        logs: tuple = ()
+        events = instance.events
+        if events and events[-1].tick == instance.tick_count:
+            lines = []
+            for event in reversed(events):   # this tick's lines are the newest
+                if event.tick != instance.tick_count:
+                    break
+                lines.append((event.node, event.level, event.message))
+            logs = tuple(lines[::-1])
+        topics = published_this_tick(world)   # ROS 2 messages published during the tick
+        manager = self._manager
+        if manager is None:
+            manager = self._manager = surface_gripper_manager(world)
+        samples = tuple(sample_grippers(world, manager).items()) if manager is not None else ()
+        return (instance.tick_count, world.time, pulses, tuple(values), samples, tuple(topics) if topics else (),
+                logs, self._scene.capture(manager))
 
     def _encode(self, captured: tuple) -> dict:
         """The tick's record: pulses, changed outputs, changed gripper fields, topics, log lines, scene fields."""
         tick, time, pulses, values, samples, topics, logs, scene = captured
         record: dict[str, Any] = {"tick": tick, "t": time}
         if pulses:
-            record["pulses"] = pulses
+            record["pulses"] = list(pulses)
         changed = self._changed_outputs(values)
         if changed:
             record["outputs"] = changed
         grippers = {}
-        for path, sample in samples.items():
+        for path, sample in samples:
             if path in self._unused:
                 continue    # a stage gripper the graph does not use
             fields = sample.fields()
@@ -134,9 +147,9 @@ class TraceRecorder:
         if grippers:
             record["grippers"] = grippers
         if topics:
-            record["topics"] = topics
+            record["topics"] = list(topics)
         if logs:
-            record["log"] = logs
+            record["log"] = [{"node": node, "level": level, "message": message} for node, level, message in logs]
         record.update(self._scene.encode(scene))
         return record
 
@@ -146,7 +159,7 @@ class TraceRecorder:
         if self.stream is not None:
             self.stream.write(dumps_record(record) + "\n")
 
-    def _changed_outputs(self, values: list) -> dict[str, Any]:
+    def _changed_outputs(self, values: tuple) -> dict[str, Any]:
         """Outputs whose value changed; an immutable value equal to the last one is skipped unconverted."""
         changed, written, last_raw, keys = {}, self._outputs, self._raw, self._keys
         for index, raw in enumerate(values):

@@ -17,7 +17,7 @@ import sys
 from dataclasses import dataclass
 from importlib import metadata
 from pathlib import Path
-from typing import Any, Iterator
+from typing import Any, Iterator, NamedTuple
 
 from graphflow import __version__
 from graphflow.errors import BadInput
@@ -76,16 +76,11 @@ def surface_gripper_manager(world):
     return world.services.get(SurfaceGripperManager)
 
 
-def published_topics(world) -> list[dict]:
-    """ROS 2 messages published during the tick (``topic``, ``type``, ``message``), when the run has a topic bus."""
-    from graphflow.ros2.bus import published_this_tick
+class GripperSample(NamedTuple):
+    """One gripper as seen after a tick: status, gripped objects, holding force, held height, reason.
 
-    return published_this_tick(world)
-
-
-@dataclass(frozen=True)
-class GripperSample:
-    """One gripper as seen after a tick: status, gripped objects, holding force, held height, reason."""
+    A tuple of plain values: a run report keeps one per gripper and tick, and the garbage collector
+    stops tracking such tuples once it has seen them."""
 
     status: str
     gripped: tuple[str, ...]
@@ -98,9 +93,12 @@ class GripperSample:
                 "reason": self.reason}
 
 
-def sample_grippers(world) -> dict[str, GripperSample]:
-    """Every surface gripper of the world: status, gripped objects, constraint force (N), held object's z (m)."""
-    manager = surface_gripper_manager(world)
+def sample_grippers(world, manager=None) -> dict[str, GripperSample]:
+    """Every surface gripper of the world: status, gripped objects, constraint force (N), held object's z (m).
+
+    *manager*: the world's gripper manager, when the caller has looked it up already."""
+    if manager is None:
+        manager = surface_gripper_manager(world)
     if manager is None:
         return {}
     samples = {}

@@ -77,7 +77,7 @@ class SceneSection:
         counts = tuple(self.instance.compute_counts)
         poses = None
         if self.moving and self.instance.tick_count % self.pose_every == 0:
-            poses = self.world.body_poses(self.moving)
+            poses = tuple(self.world.body_poses(self.moving))   # a tuple: see TraceRecorder._capture
         rays = self._rays_on_close(manager) if manager is not None else None
         return counts, poses, rays
 
