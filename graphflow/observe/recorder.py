@@ -51,7 +51,7 @@ class TraceRecorder:
         self._pulses: list[str] = []
         self._pulse_names: dict[tuple, str] = {}   # (node, exec output, state) -> its pulse text
         self._captured: list[tuple] = []           # ticks captured but not yet encoded (no stream)
-        self._grippers: dict[str, dict] = {}
+        self._grippers: dict[str, Any] = {}          # each gripper's sample as last encoded
         self._manager = None   # the world's gripper manager, once a node has made it
         nodes = self.instance.compiled.nodes
         databases = [self.instance.database(node.name) for node in nodes]
@@ -138,12 +138,15 @@ class TraceRecorder:
         for path, sample in samples:
             if path in self._unused:
                 continue    # a stage gripper the graph does not use
+            previous = self._grippers.get(path)
+            self._grippers[path] = sample
+            if previous == sample and sample.force == sample.force and sample.held_z == sample.held_z:
+                continue    # unchanged (NaN never equals itself: those go the long way)
             fields = sample.fields()
-            previous = self._grippers.get(path, {})
-            delta = {key: value for key, value in fields.items() if _changed(previous.get(key, _MISSING), value)}
+            old = previous.fields() if previous is not None else {}
+            delta = {key: value for key, value in fields.items() if _changed(old.get(key, _MISSING), value)}
             if delta:
                 grippers[path] = delta
-            self._grippers[path] = fields
         if grippers:
             record["grippers"] = grippers
         if topics:
@@ -174,7 +177,7 @@ class TraceRecorder:
                 if old is _MISSING or (old != raw and not (raw != raw and old != old)):   # NaN stays NaN
                     changed[key] = written[key] = raw
                 continue
-            value = to_json_value(raw)
+            value = list(raw) if kind is tuple else to_json_value(raw)   # a captured tuple holds scalars only
             if _changed(written.get(key, _MISSING), value):
                 changed[key] = written[key] = value
         return changed
@@ -213,18 +216,11 @@ def _scalar_items(value: tuple) -> bool:
 
 
 def _unchanged(kind: type, previous: Any, raw: Any) -> bool:
-    """The same immutable value as last tick: a scalar, or a tuple of scalars (never a list or an array a node
-    may mutate in place)."""
-    if kind in _SCALARS:
+    """The same immutable value as last tick: a scalar, or a tuple (``_capture`` keeps only tuples of scalars;
+    lists and arrays a node may mutate in place were copied, and copies always go the long way)."""
+    if kind in _SCALARS or kind is tuple:
         return previous is raw or previous == raw
-    if kind is not tuple:
-        return False
-    try:
-        if not (previous is raw or previous == raw):
-            return False
-    except ValueError:   # an array inside: its truth is ambiguous
-        return False
-    return all(type(item) in _SCALARS for item in raw)
+    return False
 
 
 def _changed(previous: Any, value: Any) -> bool:
