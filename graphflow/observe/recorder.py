@@ -14,6 +14,7 @@ from typing import IO, Any, Sequence
 from graphflow.observe.trace import (
     TRACE_FORMAT,
     TRACE_VERSION,
+    GripperSample,
     dumps_record,
     loaded_versions,
     phase_outputs,
@@ -50,7 +51,8 @@ class TraceRecorder:
         self.instance = simulation.instance
         self._pulses: list[str] = []
         self._pulse_names: dict[tuple, str] = {}   # (node, exec output, state) -> its pulse text
-        self._captured: list[tuple] = []           # ticks captured but not yet encoded (no stream)
+        self._captured: list = []                  # ticks captured but not yet encoded, flat (see _capture)
+        self._pending = 0                          # how many ticks _captured holds
         self._grippers: dict[str, Any] = {}          # each gripper's sample as last encoded
         self._manager = None   # the world's gripper manager, once a node has made it
         nodes = self.instance.compiled.nodes
@@ -83,32 +85,34 @@ class TraceRecorder:
 
     def on_tick(self, simulation, tick: int) -> None:
         """Capture the tick that just ran; write its record now when there is a stream."""
-        captured = self._capture()
-        if self.stream is None:
-            self._captured.append(captured)
-        else:
-            self._emit(self._encode(captured))
+        self._capture()
+        if self.stream is not None:
+            self.flush()
 
     def flush(self) -> None:
-        """Encode the ticks captured since the last flush into ``records`` (a recorder without a stream)."""
+        """Encode the ticks captured since the last flush into ``records`` (and the stream)."""
         captured, self._captured = self._captured, []
-        for tick in captured:
-            self._emit(self._encode(tick))
+        take = iter(captured).__next__
+        for _tick in range(self._pending):
+            self._emit(self._encode(take))
+        self._pending = 0
 
-    def _capture(self) -> tuple:
-        """What the tick's record is made of, read now (later ticks overwrite it).
+    def _capture(self) -> None:
+        """Append what the tick's record is made of to ``_captured``, read now (later ticks overwrite it).
 
-        Tuples of plain values wherever possible: the garbage collector stops tracking those, so a long
-        run's captures do not slow its collections down."""
-        instance, world = self.instance, self.simulation.world
-        pulses = tuple(self._pulses)
+        One flat list of plain values (the order ``_encode`` reads them in), not objects per tick: the
+        garbage collector does not track floats and strings, so a long run's captures do not make its
+        collections more frequent or slower."""
+        instance, world, flat = self.instance, self.simulation.world, self._captured
+        flat += (instance.tick_count, world.time, len(self._pulses))
+        flat += self._pulses
         self._pulses.clear()
         values = [outputs[name] for outputs, name in self._sources]
         for index, value in enumerate(values):
             kind = type(value)
             if kind not in _SCALARS and not (kind is tuple and _scalar_items(value)):
                 values[index] = to_json_value(value)   # a list or array a node may change in place: a copy
-        logs: tuple = ()
+        flat += values
         events = instance.events
         if events and events[-1].tick == instance.tick_count:
             lines = []
@@ -116,26 +120,36 @@ class TraceRecorder:
                 if event.tick != instance.tick_count:
                     break
                 lines.append((event.node, event.level, event.message))
-            logs = tuple(lines[::-1])
-        topics = published_this_tick(world)   # ROS 2 messages published during the tick
+            flat.append(lines[::-1])
+        else:
+            flat.append(None)
+        flat.append(published_this_tick(world) or None)   # ROS 2 messages published during the tick
         manager = self._manager
         if manager is None:
             manager = self._manager = surface_gripper_manager(world)
-        samples = tuple(sample_grippers(world, manager).items()) if manager is not None else ()
-        return (instance.tick_count, world.time, pulses, tuple(values), samples, tuple(topics) if topics else (),
-                logs, self._scene.capture(manager))
+        samples = sample_grippers(world, manager) if manager is not None else {}
+        flat.append(len(samples))
+        for path, sample in samples.items():
+            flat.append(path)
+            flat += sample
+        self._scene.capture(manager, flat)
+        self._pending += 1
 
-    def _encode(self, captured: tuple) -> dict:
-        """The tick's record: pulses, changed outputs, changed gripper fields, topics, log lines, scene fields."""
-        tick, time, pulses, values, samples, topics, logs, scene = captured
-        record: dict[str, Any] = {"tick": tick, "t": time}
+    def _encode(self, take) -> dict:
+        """The next captured tick's record (*take* reads ``_captured`` in order): pulses, changed outputs,
+        changed gripper fields, topics, log lines, scene fields."""
+        record: dict[str, Any] = {"tick": take(), "t": take()}
+        pulses = [take() for _ in range(take())]
         if pulses:
-            record["pulses"] = list(pulses)
-        changed = self._changed_outputs(values)
+            record["pulses"] = pulses
+        changed = self._changed_outputs([take() for _ in self._keys])
         if changed:
             record["outputs"] = changed
+        logs, topics = take(), take()
         grippers = {}
-        for path, sample in samples:
+        for _gripper in range(take()):
+            path = take()
+            sample = GripperSample(take(), take(), take(), take(), take())
             if path in self._unused:
                 continue    # a stage gripper the graph does not use
             previous = self._grippers.get(path)
@@ -150,10 +164,10 @@ class TraceRecorder:
         if grippers:
             record["grippers"] = grippers
         if topics:
-            record["topics"] = list(topics)
+            record["topics"] = topics
         if logs:
             record["log"] = [{"node": node, "level": level, "message": message} for node, level, message in logs]
-        record.update(self._scene.encode(scene))
+        record.update(self._scene.encode(take))
         return record
 
     def _emit(self, record: dict) -> None:
@@ -162,7 +176,7 @@ class TraceRecorder:
         if self.stream is not None:
             self.stream.write(dumps_record(record) + "\n")
 
-    def _changed_outputs(self, values: tuple) -> dict[str, Any]:
+    def _changed_outputs(self, values: list) -> dict[str, Any]:
         """Outputs whose value changed; an immutable value equal to the last one is skipped unconverted."""
         changed, written, last_raw, keys = {}, self._outputs, self._raw, self._keys
         for index, raw in enumerate(values):

@@ -55,7 +55,7 @@ class SceneSection:
         self.bodies = dict(getattr(description, "bodies", {}) or {})
         self.moving = [path for path, body in self.bodies.items() if body.kind != "static"]
         self._poses: dict[str, list[float]] = {}
-        self._counts = tuple(self.instance.compute_counts)
+        self._counts = list(self.instance.compute_counts)
         self._gripper_status: dict[str, str] = {}
 
     def header(self) -> dict:
@@ -72,32 +72,37 @@ class SceneSection:
         links = sorted({path for articulation in description.articulations for path in articulation.bodies})
         return {"scene": {"upAxis": description.up_axis, "poseEvery": self.pose_every, "bodies": bodies, "links": links}}
 
-    def capture(self, manager) -> tuple:
-        """What ``encode`` needs of this tick, read now: compute counts, sampled body poses, rays of closes that began."""
-        counts = tuple(self.instance.compute_counts)
-        poses = None
+    def capture(self, manager, flat: list) -> None:
+        """Append what ``encode`` needs of this tick to *flat*, read now: compute counts, whether poses were
+        sampled and each sampled pose's seven numbers, the rays of closes that began (or None)."""
+        flat += self.instance.compute_counts
         if self.moving and self.instance.tick_count % self.pose_every == 0:
-            poses = tuple(self.world.body_poses(self.moving))   # a tuple: see TraceRecorder._capture
-        rays = self._rays_on_close(manager) if manager is not None else None
-        return counts, poses, rays
+            flat.append(True)
+            for position, orientation in self.world.body_poses(self.moving):
+                flat += position
+                flat += orientation
+        else:
+            flat.append(False)
+        flat.append(self._rays_on_close(manager) if manager is not None else None)
 
-    def encode(self, captured: tuple) -> dict:
-        """A tick's ``computed`` nodes, sampled ``poses`` that changed and ``rays``, from its ``capture``."""
-        counts, sampled, rays = captured
+    def encode(self, take) -> dict:
+        """A tick's ``computed`` nodes, sampled ``poses`` that changed and ``rays``, read from its capture by *take*."""
         record: dict[str, Any] = {}
+        counts = [take() for _ in self._counts]
         computed = [node.name for node, before, now in zip(self.instance.compiled.nodes, self._counts, counts)
                     if now != before]
         self._counts = counts
         if computed:
             record["computed"] = computed
-        if sampled is not None:
+        if take():
             poses = {}
-            for path, pose in zip(self.moving, sampled):
-                pose = _pose_list(pose)
+            for path in self.moving:
+                pose = [float(take()) for _ in range(7)]
                 if pose != self._poses.get(path):
                     poses[path] = self._poses[path] = pose
             if poses:
                 record["poses"] = poses
+        rays = take()
         if rays:
             record["rays"] = rays
         return record
