@@ -9,7 +9,8 @@ the capture. Both go through the same ``_encode``: the records are identical.
 """
 from __future__ import annotations
 
-from typing import IO, Any, Sequence
+from itertools import islice
+from typing import IO, Any, Iterator, Sequence
 
 from graphflow.observe.trace import (
     TRACE_FORMAT,
@@ -92,9 +93,9 @@ class TraceRecorder:
     def flush(self) -> None:
         """Encode the ticks captured since the last flush into ``records`` (and the stream)."""
         captured, self._captured = self._captured, []
-        take = iter(captured).__next__
+        items = iter(captured)
         for _tick in range(self._pending):
-            self._emit(self._encode(take))
+            self._emit(self._encode(items))
         self._pending = 0
 
     def _capture(self) -> None:
@@ -135,14 +136,15 @@ class TraceRecorder:
         self._scene.capture(manager, flat)
         self._pending += 1
 
-    def _encode(self, take) -> dict:
-        """The next captured tick's record (*take* reads ``_captured`` in order): pulses, changed outputs,
+    def _encode(self, items: Iterator) -> dict:
+        """The next captured tick's record (*items* reads ``_captured`` in order): pulses, changed outputs,
         changed gripper fields, topics, log lines, scene fields."""
+        take = items.__next__
         record: dict[str, Any] = {"tick": take(), "t": take()}
-        pulses = [take() for _ in range(take())]
+        pulses = list(islice(items, take()))
         if pulses:
             record["pulses"] = pulses
-        changed = self._changed_outputs([take() for _ in self._keys])
+        changed = self._changed_outputs(list(islice(items, len(self._keys))))
         if changed:
             record["outputs"] = changed
         logs, topics = take(), take()
@@ -167,7 +169,7 @@ class TraceRecorder:
             record["topics"] = topics
         if logs:
             record["log"] = [{"node": node, "level": level, "message": message} for node, level, message in logs]
-        record.update(self._scene.encode(take))
+        record.update(self._scene.encode(items))
         return record
 
     def _emit(self, record: dict) -> None:

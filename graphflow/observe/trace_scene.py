@@ -11,7 +11,8 @@ description; nothing is timed, so the section is as deterministic as the rest.
 """
 from __future__ import annotations
 
-from typing import Any
+from itertools import islice
+from typing import Any, Iterator
 
 from graphflow.poses import AXIS_VECTORS, quat_rotate
 
@@ -85,24 +86,24 @@ class SceneSection:
             flat.append(False)
         flat.append(self._rays_on_close(manager) if manager is not None else None)
 
-    def encode(self, take) -> dict:
-        """A tick's ``computed`` nodes, sampled ``poses`` that changed and ``rays``, read from its capture by *take*."""
+    def encode(self, items: Iterator) -> dict:
+        """A tick's ``computed`` nodes, sampled ``poses`` that changed and ``rays``, read from its capture by *items*."""
         record: dict[str, Any] = {}
-        counts = [take() for _ in self._counts]
+        counts = list(islice(items, len(self._counts)))
         computed = [node.name for node, before, now in zip(self.instance.compiled.nodes, self._counts, counts)
                     if now != before]
         self._counts = counts
         if computed:
             record["computed"] = computed
-        if take():
+        if next(items):
             poses = {}
             for path in self.moving:
-                pose = [float(take()) for _ in range(7)]
+                pose = list(map(float, islice(items, 7)))
                 if pose != self._poses.get(path):
                     poses[path] = self._poses[path] = pose
             if poses:
                 record["poses"] = poses
-        rays = take()
+        rays = next(items)
         if rays:
             record["rays"] = rays
         return record
