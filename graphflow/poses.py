@@ -8,6 +8,7 @@ converted at the USD boundary).
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 
 Vec3 = tuple[float, float, float]
 Quat = tuple[float, float, float, float]
@@ -16,6 +17,12 @@ Pose = tuple[Vec3, Quat]
 IDENTITY_QUAT: Quat = (0.0, 0.0, 0.0, 1.0)
 IDENTITY_POSE: Pose = ((0.0, 0.0, 0.0), IDENTITY_QUAT)
 AXIS_VECTORS = {"X": (1.0, 0.0, 0.0), "Y": (0.0, 1.0, 0.0), "Z": (0.0, 0.0, 1.0)}
+
+
+def as_vec3(values: Iterable[float]) -> Vec3:
+    """Three numbers as a typed Vec3 (no conversion: a wrong length raises ValueError)."""
+    x, y, z = values
+    return (x, y, z)
 
 
 def quat_multiply(a: Quat, b: Quat) -> Quat:

@@ -13,7 +13,7 @@ import copy
 import os
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Iterator, Mapping, TypeVar, overload
+from typing import TYPE_CHECKING, Any, Iterator, Mapping, NoReturn, TypeVar, overload
 
 from graphflow.document import GraphDocument, dumps, load_document, parse_document, save_document
 from graphflow.model import FORMAT_NAME, FORMAT_VERSION, GraphError, Problem
@@ -164,9 +164,7 @@ class Graph:
         entry = self._find(name)
         if entry is None:
             self._refuse("no such node", node=name)
-        node_type = self.registry.get(entry["type"])
-        assert node_type is not None   # the document compiled
-        return NodeHandle(self, name, node_type.spec)
+        return NodeHandle(self, name, self._spec_of(entry))
 
     def nodes(self) -> list[NodeHandle]:
         return [self[entry["name"]] for entry in self._data["nodes"]]
@@ -270,6 +268,11 @@ class Graph:
     def _checked(self, data: dict, schema_problems=None) -> GraphDocument:
         return parse_document(data, self.source, self.registry, schema_problems=schema_problems)
 
+    def _spec_of(self, entry: dict) -> NodeSpec:
+        node_type = self.registry.get(entry["type"])
+        assert node_type is not None   # every node in the document compiled, so its type is registered
+        return node_type.spec
+
     def _find(self, name: str) -> dict | None:
         return next((entry for entry in self._data["nodes"] if entry["name"] == name), None)
 
@@ -283,14 +286,14 @@ class Graph:
         entry = self._find(node)
         if entry is None:
             self._refuse(f"no such node (in {text!r})", node=node, attribute=attribute, kind="connection")
-        spec = self.registry.get(entry["type"]).spec
+        spec = self._spec_of(entry)
         if spec.attribute(attribute) is None:
             names = ", ".join(a.name for a in (spec.inputs if group == "inputs" else spec.outputs))
             self._refuse(f"{spec.id} has no {group[:-1]} '{attribute.split(':', 1)[1]}' (it has: {names})",
                          node=node, attribute=attribute, kind=group[:-1])
         return node, attribute
 
-    def _refuse(self, message: str, **where) -> None:
+    def _refuse(self, message: str, **where) -> NoReturn:
         raise GraphError([Problem(self.source, message, **where)])
 
 

@@ -17,7 +17,7 @@ from graphflow.registry import Registry, default_registry
 from graphflow.spec import Attribute, NodeSpec
 from graphflow.types import INTEGER_RANGES, SCALAR_KINDS, TUPLE_ROLES, parse_type
 
-_SCALAR_SCHEMAS = {"bool": {"type": "boolean"}, "int": {"type": "integer"}, "uint": {"type": "integer", "minimum": 0},
+_SCALAR_SCHEMAS: dict[str, dict[str, object]] = {"bool": {"type": "boolean"}, "int": {"type": "integer"}, "uint": {"type": "integer", "minimum": 0},
                    "real": {"type": "number"}, "str": {"type": "string"}}
 
 

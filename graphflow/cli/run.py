@@ -128,7 +128,8 @@ def command_run(args) -> int:
             from graphflow.ros2 import run as ros2_run
 
             recording = ros2_run.attach_topics(simulation.world, None, args.record_topics)
-            outputs.push(lambda kind, _error, _trace: recording.abandon() if kind is not None else recording.close())
+            if recording is not None:
+                outputs.push(lambda kind, _error, _trace: recording.abandon() if kind is not None else recording.close())
         trace_stream = _open_trace(args.trace, outputs, args.force) if args.trace else None
         report = _start_report(args, simulation, trace_stream, variant.drawn)
         if trace_stream is not None and report is None:

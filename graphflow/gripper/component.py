@@ -15,7 +15,7 @@ from enum import IntEnum
 from typing import Any, Callable, Sequence
 
 from graphflow.poses import AXIS_VECTORS, Pose, quat_rotate
-from graphflow.world import AXIS_NAMES, AxisCompliance, World
+from graphflow.world import AXIS_NAMES, Attachments, AxisCompliance, World, WorldError
 
 SETTLING_DELAY = 10          # physics steps before force checks after an attach or break (m_settlingDelay)
 SELF_HIT_STEP = 0.001        # m the ray origin advances past the gripper's own body
@@ -114,7 +114,7 @@ class SurfaceGripperComponent:
         self.handles: dict[int, Any] = {}        # index -> executed attachment handle
         # joint path -> (reach, nearest hit (prim, m) or None) of its first empty ray since the close began,
         # or None when it saw only the gripper's own body: where the arm was when the close was commanded
-        self.misses: dict[str, tuple | None] = {}
+        self.misses: dict[str, tuple | str | None] = {}
         # (physics step index, handle -> rigid-row force) as check_force_limits read them on that step:
         # checked_force answers from it until the next step instead of asking the world again
         self._step_forces: tuple[int, dict] = (-1, {})
@@ -197,7 +197,7 @@ class SurfaceGripperComponent:
                 point.settle -= 1
                 self.misses.setdefault(point.joint_path, SETTLING)
                 continue
-            frame = self.world.attachments.frame(point.body0_path, point.local_pose0)
+            frame = self._attachments.frame(point.body0_path, point.local_pose0)
             if frame is None:
                 continue
             target = self._cast(point, frame)
@@ -227,15 +227,15 @@ class SurfaceGripperComponent:
                     reach = length if length > 0 else 0.001
                     self.misses[point.joint_path] = (reach, self._nearest_hit(origin, direction))
                 return None
-            hit = hit.prim_path
-            if self.world.same_body(hit, point.body0_path):
+            hit_path = hit.prim_path
+            if self.world.same_body(hit_path, point.body0_path):
                 clearance += SELF_HIT_STEP
                 continue
             if clearance > 0 and clearance != point.clearance_offset:
                 point.clearance_offset = clearance
                 if self.on_clearance_change is not None:
                     self.on_clearance_change(point)
-            return hit
+            return hit_path
         self.misses.setdefault(point.joint_path, None)   # nothing but the gripper's own body for 1 m
         return None
 
@@ -255,9 +255,12 @@ class SurfaceGripperComponent:
             handle = self.handles.get(index)
             if handle is None:
                 continue
-            attachments = self.world.attachments
+            attachments = self._attachments
             force = step_forces[handle] = attachments.force_on_gripper(handle)
-            direction = point.frame_direction(attachments.frame(point.body0_path, point.local_pose0))
+            frame = attachments.frame(point.body0_path, point.local_pose0)
+            if frame is None:
+                continue
+            direction = point.frame_direction(frame)
             coaxial = sum(force[i] * direction[i] for i in range(3))
             shear_squared = sum((force[i] - direction[i] * coaxial) ** 2 for i in range(3))
             broken = None
@@ -279,6 +282,13 @@ class SurfaceGripperComponent:
 
     # -- queries --
 
+    @property
+    def _attachments(self) -> Attachments:
+        attachments = self.world.attachments
+        if attachments is None:
+            raise WorldError("a surface gripper needs a world with bodies to attach (this world has none)")
+        return attachments
+
     def checked_force(self, handle) -> float:
         """|F| on the gripper as its limits see it (N): the whole force for a legacy ``forceLimit`` (the springs'
         share included: the legacy joint breaks on it), else the rigid rows' (what the coaxial and shear
@@ -287,7 +297,7 @@ class SurfaceGripperComponent:
         step, forces = self._step_forces
         if rigid_rows_only and handle in forces and step == self.world.step_index:
             return _norm(forces[handle])
-        return _norm(self.world.attachments.force_on_gripper(handle, rigid_rows_only))
+        return _norm(self._attachments.force_on_gripper(handle, rigid_rows_only))
 
     def gripped_objects(self) -> list[str]:
         """Objects held by executed attachments, each once, sorted (Isaac returns an unordered set)."""
@@ -336,7 +346,7 @@ class SurfaceGripperComponent:
         details = []
         for joint_path in missed[:REASON_POINTS_LISTED]:
             miss = self.misses[joint_path]
-            if miss == SETTLING:
+            if isinstance(miss, str):     # SETTLING
                 details.append(f"{joint_path}: still settling after its last grip ({SETTLING_DELAY} physics steps)")
                 continue
             if miss is None:

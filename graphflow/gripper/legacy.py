@@ -31,7 +31,7 @@ import logging
 import math
 
 from graphflow.gripper.component import GripperStatus
-from graphflow.gripper.manager import manager_for
+from graphflow.gripper.manager import SurfaceGripperManager, manager_for
 from graphflow.gripper.usd_schema import (
     apply_attachment_point_api,
     create_surface_gripper,
@@ -67,8 +67,8 @@ class SurfaceGripper:
         self.kp = float(kp)
         self.kd = float(kd)
         self.disable_gravity = bool(disable_gravity)
-        self.manager = None
-        self.gripper_path: str | None = None
+        self.manager: SurfaceGripperManager | None = None
+        self.gripper_path = ""      # set by initialize(), with the manager
         self._default_opened: bool | None = None
         self._num_dofs: int | None = None
         self._breaks_seen = 0
@@ -96,14 +96,14 @@ class SurfaceGripper:
             gripper = create_surface_gripper(stage, self.end_effector_prim_path)
             gripper.GetRelationship("isaac:attachmentPoints").SetTargets([joint.GetPath()])
         self.gripper_path = gripper.GetPath().pathString
-        self.manager = manager_for(world)
-        self.manager.set_gripper_properties(self.gripper_path, max_grip_distance=self.grip_threshold,
+        self.manager = manager = manager_for(world)
+        manager.set_gripper_properties(self.gripper_path, max_grip_distance=self.grip_threshold,
                                             coaxial_force_limit=-1.0, shear_force_limit=-1.0,
                                             retry_interval=math.inf)
-        self.manager.set_break_limits(self.gripper_path, self.force_limit, self.torque_limit)
-        self.manager.set_reach_from_ray_origin(self.gripper_path, True)
-        self.manager.set_gravity_disabled_while_held(self.gripper_path, self.disable_gravity)
-        self._breaks_seen = self.manager.component(self.gripper_path).events.force_breaks
+        manager.set_break_limits(self.gripper_path, self.force_limit, self.torque_limit)
+        manager.set_reach_from_ray_origin(self.gripper_path, True)
+        manager.set_gravity_disabled_while_held(self.gripper_path, self.disable_gravity)
+        self._breaks_seen = manager.component(self.gripper_path).events.force_breaks
         if self._default_opened is None:
             self._default_opened = not self.is_closed()
 
@@ -129,7 +129,7 @@ class SurfaceGripper:
 
     # -- the legacy interface --
 
-    def _require(self):
+    def _require(self) -> SurfaceGripperManager:
         if self.manager is None:
             raise RuntimeError("call initialize(world) first")
         return self.manager
@@ -150,11 +150,12 @@ class SurfaceGripper:
 
     def update(self) -> None:
         """Open after a force or torque limit broke the grip ("Gripper Constraint is Broken")."""
-        breaks = self._require().component(self.gripper_path).events.force_breaks
+        manager = self._require()
+        breaks = manager.component(self.gripper_path).events.force_breaks
         if breaks > self._breaks_seen:
             self._breaks_seen = breaks
             log.warning("Gripper Constraint is Broken")
-            self.manager.open_gripper(self.gripper_path)
+            manager.open_gripper(self.gripper_path)
 
     def is_closed(self) -> bool:
         return self._require().get_gripper_status(self.gripper_path) == GripperStatus.CLOSED

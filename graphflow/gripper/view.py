@@ -56,4 +56,5 @@ class GripperView:
     def get_surface_gripper_properties(self) -> tuple[list[float], list[float], list[float], list[float]]:
         """``(maxGripDistance, coaxialForceLimit, shearForceLimit, retryInterval)``, one list each."""
         rows = [self.manager.get_gripper_properties(path) for path in self.paths]
-        return tuple([row[column] for row in rows] for column in range(4))
+        distance, coaxial, shear, retry = ([row[column] for row in rows] for column in range(4))
+        return distance, coaxial, shear, retry

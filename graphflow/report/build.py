@@ -71,7 +71,10 @@ def run_data(trace: Trace, document, info: RunInfo = RunInfo()) -> dict:
     grippers: dict[str, dict[str, list]] = {path: {} for path in header.get("grippers", [])}
     scene = header.get("scene") or {"upAxis": "Z", "poseEvery": None, "bodies": []}
     poses = {body["path"]: [[0, _rounded_pose(body["pose"])]] for body in scene["bodies"] if body["kind"] != "static"}
-    pulses, log, rays, limits = [], [], [], {}
+    pulses: list = []
+    log: list = []
+    rays: list = []
+    limits: dict = {}
     pose_every = scene.get("poseEvery")
     for record in trace.ticks:
         tick = record["tick"]

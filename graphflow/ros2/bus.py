@@ -16,7 +16,7 @@ transport would implement the same four methods on rclpy (see docs/ros2.md).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Iterable, Protocol
+from typing import Iterable, Protocol, TypeVar
 
 from graphflow.ros2.messages import complete
 from graphflow.ros2.messages import type_name as standard_type
@@ -111,9 +111,13 @@ class TopicBus:
         return delivered
 
 
-def attach_transport(world, transport: Transport) -> Transport:
-    """Connect *transport* to the topic bus of *world*."""
-    return topic_bus_for(world).add_transport(transport)
+AnyTransport = TypeVar("AnyTransport", bound=Transport)
+
+
+def attach_transport(world, transport: AnyTransport) -> AnyTransport:
+    """Connect *transport* to the topic bus of *world*; the same transport is returned, its type kept."""
+    topic_bus_for(world).add_transport(transport)
+    return transport
 
 
 def topic_bus_for(world) -> TopicBus:

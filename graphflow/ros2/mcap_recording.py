@@ -11,9 +11,13 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from graphflow.errors import EXTRAS, BadInput, MissingExtra, require_extra
 from graphflow.ros2.messages import definition
+
+if TYPE_CHECKING:
+    from mcap.records import Schema
 
 
 class RecordingError(BadInput):
@@ -44,7 +48,7 @@ class McapRecording:
         self._partial = self.path.with_name(self.path.name + ".partial")
         self._stream = open(self._partial, "wb")
         self._writer = Writer(self._stream, compression=CompressionType.NONE)
-        self._schemas: dict[str, object] = {}
+        self._schemas: dict[str, Schema] = {}
 
     def receive(self, time: float) -> list:
         return []

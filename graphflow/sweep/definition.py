@@ -252,7 +252,7 @@ def _override_problems(sweep: Sweep, document, stage: _StageForChecks) -> list[s
     try:
         for episode in first_of_point:
             edits = sweep.edits(episode)
-            apply_node_overrides(document, [e for e in edits if not e.on_stage])
+            apply_node_overrides(document, edits)
             stage_edits = [e for e in edits if e.on_stage]
             if stage_edits:
                 apply_stage_overrides(stage.fresh(), stage_edits)

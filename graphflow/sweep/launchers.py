@@ -7,7 +7,7 @@ the same ``run(episodes) -> records`` and ``close()``. A worker or actor that di
 from __future__ import annotations
 
 from collections import deque
-from typing import Iterable, Sequence
+from typing import Generator, Sequence
 
 from graphflow.errors import EXTRAS, MissingExtra
 from graphflow.sweep.definition import Episode, Sweep, SweepError
@@ -67,7 +67,7 @@ class LocalPool:
         self.workers.append(worker)
         return worker
 
-    def run(self, episodes: Sequence[Episode]) -> Iterable[dict]:
+    def run(self, episodes: Sequence[Episode]) -> Generator[dict, None, None]:
         from multiprocessing.connection import wait
 
         pending = list(reversed(episodes))
@@ -102,7 +102,7 @@ class LocalPool:
         finally:
             self.close()
 
-    def _replace(self, worker: dict, pending: list) -> Iterable[dict]:
+    def _replace(self, worker: dict, pending: list) -> Generator[dict, None, None]:
         process = worker["process"]
         process.join(timeout=5)
         code = process.exitcode
@@ -199,7 +199,7 @@ class RayPool:
                 episode = pending.pop()
                 worker["queue"].append((worker["actor"].run.remote(episode), episode))
 
-    def run(self, episodes: Sequence[Episode]) -> Iterable[dict]:
+    def run(self, episodes: Sequence[Episode]) -> Generator[dict, None, None]:
         ray = self.ray
         self._init()
         try:

@@ -10,6 +10,7 @@ import os
 import sys
 import time
 from pathlib import Path
+from typing import Generator
 
 from graphflow.errors import EXIT_INTERRUPTED, interrupt_handled
 from graphflow.sweep.definition import EPISODES_CSV, SUMMARY_CSV, load_sweep
@@ -62,6 +63,7 @@ def run_sweep(path: str, *, out: str | None = None, jobs: int | None = None, ray
     sweep = load_sweep(path)
     folder = ResultsFolder(Path(out) if out else default_out(path), sweep)
     episodes = sweep.episodes()
+    executor: LocalPool | RayPool
     if use_ray:
         executor = RayPool(sweep, jobs, ray_address)
     else:
@@ -76,7 +78,8 @@ def run_sweep(path: str, *, out: str | None = None, jobs: int | None = None, ray
          + (f", {len(records)} already done, {len(todo)} to run" if resume else "") + f" on {where}; results in {folder.path}")
     bar = _Progress(len(episodes), len(records), sys.stderr.isatty() if progress is None else progress)
     interrupted = False
-    running = executor.run(todo) if todo else (record for record in ())
+    nothing_to_run: tuple[dict, ...] = ()
+    running: Generator[dict, None, None] = executor.run(todo) if todo else (record for record in nothing_to_run)
     try:
         for record in running:
             folder.append(record)

@@ -17,7 +17,7 @@ import math
 from dataclasses import dataclass
 from typing import Any, Hashable, Mapping, Sequence
 
-from graphflow.poses import IDENTITY_QUAT, Pose, Vec3, compose
+from graphflow.poses import IDENTITY_QUAT, Pose, Vec3, as_vec3, compose
 from graphflow.world import (
     DEFAULT_TIME_STEP,
     RIGID,
@@ -63,7 +63,7 @@ class FakeAttachments:
 
     def __init__(self, world: "FakeWorld"):
         self.world = world
-        self.holds: dict[int, _Hold] = {}
+        self.holds: dict[Hashable, _Hold] = {}
         self.forces: dict[str, Vec3] = {}
         self.whole_forces: dict[str, Vec3] = {}
         self.torques: dict[str, Vec3] = {}
@@ -138,7 +138,7 @@ class FakeWorld:
 
     def add_box(self, path: str, center: Vec3, half_extents: Vec3, *,
                 orientation=IDENTITY_QUAT, gravity: bool = True) -> Box:
-        box = self.boxes[path] = Box(path, tuple(center), tuple(half_extents), tuple(orientation), gravity)
+        box = self.boxes[path] = Box(path, as_vec3(center), as_vec3(half_extents), tuple(orientation), gravity)
         return box
 
     def add_frame(self, path: str, body: str, pose: Pose) -> None:
@@ -147,7 +147,7 @@ class FakeWorld:
         self.frames[path] = (body, pose)
 
     def move(self, path: str, center: Vec3) -> None:
-        self._box(path).center = tuple(center)
+        self._box(path).center = as_vec3(center)
 
     def remove(self, path: str) -> None:
         self.boxes.pop(path, None)
@@ -284,8 +284,8 @@ class FakeWorld:
         norm = math.sqrt(sum(c * c for c in direction))
         if norm == 0.0:
             raise WorldError("a ray needs a non-zero direction")
-        unit = tuple(c / norm for c in direction)
-        self.rays.append((tuple(origin), unit, length))
+        unit = as_vec3(c / norm for c in direction)
+        self.rays.append((as_vec3(origin), unit, length))
         best: RayHit | None = None
         for box in self.boxes.values():
             hit = _ray_box(origin, unit, length, box)
@@ -309,8 +309,8 @@ class FakeWorld:
                 continue
             axis = max(range(3), key=lambda i: gaps[i])     # least penetration
             sign = 1.0 if box.center[axis] >= other.center[axis] else -1.0
-            normal = tuple(sign if i == axis else 0.0 for i in range(3))
-            point = tuple(other.center[i] + sign * other.half_extents[i] if i == axis else box.center[i]
+            normal = as_vec3(sign if i == axis else 0.0 for i in range(3))
+            point = as_vec3(other.center[i] + sign * other.half_extents[i] if i == axis else box.center[i]
                           for i in range(3))
             found.append(Contact(other.path, point, normal, gaps[axis], 0.0))
         return found
@@ -318,8 +318,9 @@ class FakeWorld:
     # -- actions --
 
     def apply_force(self, path: str, force: Vec3, position: Vec3 | None = None) -> None:
-        self._box(self.body_of(path) or path)
-        self._pending_forces.append((self.body_of(path), tuple(force), position))
+        body = self.body_of(path) or path
+        self._box(body)
+        self._pending_forces.append((body, as_vec3(force), position))
 
     def gravity(self) -> Vec3:
         """Kinematic boxes do not fall; the vector is what sensors subtract (a stage's default)."""
@@ -339,7 +340,7 @@ class FakeWorld:
 def _ray_box(origin: Vec3, unit: Vec3, length: float, box: Box) -> RayHit | None:
     """Slab test of a ray against an axis-aligned box: the entry point within *length* (0 when inside)."""
     if box.contains(origin):
-        return RayHit(box.path, tuple(origin), tuple(-c for c in unit), 0.0)
+        return RayHit(box.path, as_vec3(origin), as_vec3(-c for c in unit), 0.0)
     near, far, normal = 0.0, length, None
     for i in range(3):
         low, high = box.center[i] - box.half_extents[i], box.center[i] + box.half_extents[i]
@@ -351,11 +352,11 @@ def _ray_box(origin: Vec3, unit: Vec3, length: float, box: Box) -> RayHit | None
         entry, exit_ = min(t_low, t_high), max(t_low, t_high)
         if entry > near:
             near = entry
-            normal = tuple((-1.0 if unit[i] > 0 else 1.0) if j == i else 0.0 for j in range(3))
+            normal = as_vec3((-1.0 if unit[i] > 0 else 1.0) if j == i else 0.0 for j in range(3))
         far = min(far, exit_)
         if near > far:
             return None
     if normal is None:
         return None
-    position = tuple(origin[i] + unit[i] * near for i in range(3))
+    position = as_vec3(origin[i] + unit[i] * near for i in range(3))
     return RayHit(box.path, position, normal, near)

@@ -44,7 +44,7 @@ class NodeHarness:
     def __init__(self, type_id: str, inputs: Mapping[str, Any] | None = None, *,
                  world: World | None = None, time_step: float = DEFAULT_TIME_STEP,
                  type_version: int | None = None, registry: Registry | None = None):
-        node = {"name": HARNESS_NODE, "type": type_id, "inputs": dict(inputs or {})}
+        node: dict[str, Any] = {"name": HARNESS_NODE, "type": type_id, "inputs": dict(inputs or {})}
         if type_version is not None:
             node["typeVersion"] = type_version
         document = parse_document(_complete({"nodes": [node]}), source=f"<harness {type_id}>", registry=registry)

@@ -104,16 +104,17 @@ def parse_set(text: str) -> Override:
 
 # ------------------------------------------------------------------ node inputs
 
-def apply_node_overrides(document: GraphDocument, overrides: Iterable[Override]) -> GraphDocument:
-    """A new document with the overridden node inputs, checked as the file is; the old one is unchanged."""
-    overrides = [o for o in overrides if not o.on_stage]
+def apply_node_overrides(document: GraphDocument, edits: Iterable[Override | PoseJitter]) -> GraphDocument:
+    """A new document with the overridden node inputs (stage edits are left out), checked as the file is; the
+    old one is unchanged."""
+    overrides = [edit for edit in edits if isinstance(edit, Override) and not edit.on_stage]
     if not overrides:
         return document
     from graphflow.registry import default_registry
 
     registry = default_registry()
     connected = {(c.dst_node, c.dst_attr) for c in document.connections}
-    inputs = {node.name: dict(node.inputs) for node in document.nodes}
+    inputs: dict[str, dict[str, Any]] = {node.name: dict(node.inputs) for node in document.nodes}
     for override in overrides:
         node_name, input_name = override.parts()
         node = document.node(node_name)
@@ -131,7 +132,7 @@ def apply_node_overrides(document: GraphDocument, overrides: Iterable[Override])
         if (node_name, f"inputs:{input_name}") in connected:
             raise OverrideError(f"{override.label}: node '{node_name}' input '{input_name}' is connected, "
                                 "so a value set on it would be ignored")
-        value = override.value
+        value: Any = override.value
         if not isinstance(value, str) and override.text is not None and attribute.type in ("string", "token"):
             value = override.text   # --set print.text=42 means the text "42"
         try:
@@ -144,8 +145,8 @@ def apply_node_overrides(document: GraphDocument, overrides: Iterable[Override])
     try:
         compile(changed, registry)   # checked exactly as the file is
     except GraphError as error:
-        names = ", ".join(o.label for o in overrides)
-        raise OverrideError(f"{names}: {error.problems[0]}") from None
+        labels = ", ".join(o.label for o in overrides)
+        raise OverrideError(f"{labels}: {error.problems[0]}") from None
     return changed
 
 
@@ -207,7 +208,8 @@ def _apply_pose(stage, jitter: PoseJitter) -> None:
     if ops:
         translate = ops[0]
         current = translate.Get() or (0.0, 0.0, 0.0)
-        translate.Set(type(current)(*(float(c) + d for c, d in zip(current, jitter.offset))))
+        moved = [float(c) + d for c, d in zip(current, jitter.offset)]
+        translate.Set(Gf.Vec3d(*moved) if isinstance(current, tuple) else type(current)(*moved))
         rest = ops[1:]
     else:
         translate = xformable.AddTranslateOp(UsdGeom.XformOp.PrecisionDouble)
@@ -336,6 +338,6 @@ class Variant:
 
 def make_variant(document: GraphDocument, edits: Sequence[Override | PoseJitter]) -> Variant:
     """Apply node overrides now and keep the stage edits for the world (checked here against the stage)."""
-    changed = apply_node_overrides(document, [e for e in edits if not e.on_stage])
+    changed = apply_node_overrides(document, edits)
     stage_edits = tuple(e for e in edits if e.on_stage)
     return Variant(changed, stage_edits)

@@ -33,6 +33,7 @@ from typing import Any, Iterable, Mapping, Sequence
 
 from graphflow.files import FileProblem, read_json
 from graphflow.model import GraphDocument
+from graphflow.poses import as_vec3
 from graphflow.variants.overrides import (
     Override,
     OverrideError,
@@ -77,7 +78,7 @@ def schema_errors(data: Any, source: str, definition: str | None = None) -> list
         reasons = found.setdefault(path, [])
         if reason not in reasons:
             reasons.append(reason)
-    problems = []
+    problems: list[tuple[tuple, str]] = []
     for path, reasons in found.items():
         if any(r.startswith("unknown distribution") for r in reasons):   # says more than "needs one of"
             reasons = [r for r in reasons if not r.startswith("needs one of")]
@@ -191,7 +192,7 @@ class Randomization:
                 continue
             offset = draw(entry["offset"], rng) if "offset" in entry else [0.0, 0.0, 0.0]
             yaw = draw(entry["yawDegrees"], rng) if "yawDegrees" in entry else 0.0
-            edits.append(PoseJitter(entry["pose"], tuple(float(v) for v in offset), float(yaw), origin=origin))
+            edits.append(PoseJitter(entry["pose"], as_vec3(float(v) for v in offset), float(yaw), origin=origin))
         return edits
 
     @property
@@ -221,7 +222,7 @@ def randomization_problems(entries: Sequence[Any], source: str, skip: Iterable[i
 
 def entry_problems(entry: Mapping[str, Any], where: str) -> list[str]:
     """The problems of one schema-valid randomize entry, each line starting with *where*."""
-    problems = []
+    problems: list[str] = []
     distributions = [("", _distribution_of(entry))] if "set" in entry else [
         (f"{key}: ", entry[key]) for key in ("offset", "yawDegrees") if key in entry]
     problems.extend(f"{where}: {prefix}{problem}" for prefix, distribution in distributions
@@ -255,7 +256,7 @@ def load_randomization(path: str) -> Randomization:
         problems += randomization_problems(entries, path, skip=broken)
     if problems:
         raise RandomizationError("\n".join(problems))
-    return Randomization(tuple(entries), path)
+    return Randomization(tuple(entries or ()), path)
 
 
 def variant_for_run(document: GraphDocument, set_texts: Sequence[str], randomize_file: str | None,

@@ -104,7 +104,7 @@ class ScriptedInputs:
         from graphflow.inputs.gamepad import scripted_pad
         from graphflow.inputs.keyboard import scripted_keys
 
-        sources = []
+        sources: list[Any] = []
         for name, make in (("keys", scripted_keys), ("gamepad", scripted_pad)):
             value = document.scenario.get(name)
             if value is None:

@@ -71,10 +71,11 @@ def nominal_value(document, edit) -> Any:
     owner, name = edit.parts()
     if not edit.on_stage:
         node = document.node(owner)
-        if name in node.inputs:
-            return node.inputs[name]
-        attribute = default_registry().get(node.type).spec.attribute(f"inputs:{name}")
-        return attribute.default
+        node_type = default_registry().get(node.type) if node is not None else None
+        attribute = node_type.spec.attribute(f"inputs:{name}") if node_type is not None else None
+        if node is None or attribute is None:   # the override applied to this document, so neither happens
+            raise ValueError(f"{edit.label}: no input {name!r} on node {owner!r}")
+        return node.inputs.get(name, attribute.default)
     stage = Variant(document, ()).open_stage()   # held while its prim is read
     value = stage.GetPrimAtPath(owner).GetAttribute(name).Get()
     return [float(v) for v in value] if hasattr(value, "__len__") else float(value)

@@ -18,7 +18,7 @@ import xml.etree.ElementTree as ET
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 from graphflow.errors import BadInput
 from graphflow.files import FileProblem, read_json, refuse_existing, write_bytes
@@ -31,7 +31,7 @@ class NoScenarios(BadInput):
     """The paths name no scenario (or do not exist): bad input."""
 
 
-def scenario_problem(path: Path) -> str | None | bool:
+def scenario_problem(path: Path) -> str | None | Literal[False]:
     """What a ``*.json`` found under a test path is: False when it is no scenario (not a graph, or a graph
     without checks that loads), None for a scenario, or the one-line problem of a file that does not parse
     or looks like a graph and does not load. Nothing under the paths is skipped silently."""

@@ -25,7 +25,10 @@ ANY_KIND = st.one_of(st.lists(json_values, max_size=3), st.dictionaries(st.text(
 
 def places(document: dict) -> list[tuple]:
     """(container, key) pairs a wrong value can go into."""
-    found: list[tuple] = [(document, "checks"), (document, "scenario"), (document.setdefault("settings", {}), "duration")]
+    found: list[tuple] = [(document, "checks"), (document, "scenario")]
+    settings = document.setdefault("settings", {})
+    if isinstance(settings, dict):    # the generator may already have put a wrong kind there
+        found.append((settings, "duration"))
     for node in document.get("nodes", []):
         found += [(node, "name"), (node, "type"), (node, "inputs")]
         found += [(node["inputs"], key) for key in node.get("inputs", {})]

@@ -8,7 +8,7 @@ import pytest
 from conftest import ROOT
 
 from graphflow.document import load_document
-from graphflow.variants.overrides import PoseJitter, apply_node_overrides, parse_set
+from graphflow.variants.overrides import PoseJitter, apply_node_overrides, apply_stage_overrides, parse_set
 from graphflow.variants.randomize import (
     Randomization,
     load_randomization,
@@ -92,6 +92,17 @@ def test_pose_jitter_moves_and_yaws_the_prim_about_its_origin():
         position, orientation = world.prim_pose("/World/Cube")
     assert position == pytest.approx((0.41, 0.38, 0.025), abs=1e-7)
     assert orientation == pytest.approx((0.0, 0.0, math.sin(math.pi / 4), math.cos(math.pi / 4)), abs=1e-7)
+
+
+def test_pose_jitter_moves_a_prim_whose_translate_op_has_no_value_yet():
+    """An op in xformOpOrder without an authored value sits at the origin; the jitter moves it from there."""
+    from pxr import Usd, UsdGeom
+
+    stage = Usd.Stage.CreateInMemory()
+    UsdGeom.Xform.Define(stage, "/World/Marker").AddTranslateOp(UsdGeom.XformOp.PrecisionFloat)
+    apply_stage_overrides(stage, [PoseJitter("/World/Marker", (0.25, -0.5, 0.125))])
+    moved = UsdGeom.Xformable(stage.GetPrimAtPath("/World/Marker")).ComputeLocalToWorldTransform(0)
+    assert tuple(moved.ExtractTranslation()) == (0.25, -0.5, 0.125)
 
 
 @pytest.mark.slow
