@@ -1,8 +1,8 @@
 """Recording a run's trace (docs/trace.md): each tick is captured cheaply, then encoded as its record.
 
-Capturing keeps what cannot wait (values a node may overwrite, the gripper's force,
-sampled body poses, this tick's pulses and log lines) as plain references; encoding
-turns a capture into the record of changes. A trace written to a stream encodes
+Capturing appends what cannot wait (values a node may overwrite, the gripper's sample,
+sampled body poses, this tick's pulses and log lines) to one flat list of plain
+values; encoding reads it back into the records of changes. A trace written to a stream encodes
 every tick as it ends; a run report keeps its records in memory and encodes the
 captured ticks only when they are read (``flush``), so the run itself pays only for
 the capture. Both go through the same ``_encode``: the records are identical.
@@ -54,8 +54,8 @@ class TraceRecorder:
         self._pulse_names: dict[tuple, str] = {}   # (node, exec output, state) -> its pulse text
         self._captured: list = []                  # ticks captured but not yet encoded, flat (see _capture)
         self._pending = 0                          # how many ticks _captured holds
-        self._grippers: dict[str, Any] = {}          # each gripper's sample as last encoded
-        self._manager = None   # the world's gripper manager, once a node has made it
+        self._grippers: dict[str, Any] = {}        # each gripper's sample as last encoded
+        self._manager = None                       # the world's gripper manager, once a node has made it
         nodes = self.instance.compiled.nodes
         databases = [self.instance.database(node.name) for node in nodes]
         exec_names = [frozenset(a.name for a in node.spec.exec_outputs) for node in nodes]

@@ -79,8 +79,7 @@ def surface_gripper_manager(world):
 class GripperSample(NamedTuple):
     """One gripper as seen after a tick: status, gripped objects, holding force, held height, reason.
 
-    A tuple of plain values: a run report keeps one per gripper and tick, and the garbage collector
-    stops tracking such tuples once it has seen them."""
+    A tuple, so a recorder can keep its fields flat, in this order (``TraceRecorder._capture``)."""
 
     status: str
     gripped: tuple[str, ...]
