@@ -5,7 +5,7 @@ for loop over the same number of physics steps of the same world (the same
 stage loaded by graphflow.physics, the same surface-gripper service), doing
 inline what the graph's nodes do each tick: read the cube pose, advance the
 same phase machine (``graphflow_nodes._pick_place.PickPlaceRun``), solve the
-same UR10 IK and send the joint targets (``UR10Arm``), command the gripper, and
+same UR10 IK and send the joint targets (``Arm``), command the gripper, and
 on each phase change read the gripper status and format the phase line. The
 two runs must end with the cube in the same place (checked). Both reset their
 world between repetitions; only the stepping loops are timed.
@@ -25,13 +25,15 @@ class InlineScript:
     """The baseline: the graph's per-tick work written out by hand, one ``step()`` per tick."""
 
     def __init__(self, world, inputs):
-        from graphflow_nodes._pick_place import DEFAULT_INITIAL_HEIGHT, EVENT_NAMES, UR10Arm, gripper_manager
+        from graphflow_nodes._arm import Arm
+        from graphflow_nodes._pick_place import DEFAULT_INITIAL_HEIGHT, EVENT_NAMES, gripper_manager
 
         self.world = world
-        self._event_names, self._arm_type, self._manager_for = EVENT_NAMES, UR10Arm, gripper_manager
+        self._event_names, self._arm_type, self._manager_for = EVENT_NAMES, Arm, gripper_manager
         self._height = DEFAULT_INITIAL_HEIGHT
         self.robot, self.gripper = inputs.robotPrim[0], inputs.gripperPrim[0]
         self.placing, self.offset = tuple(inputs.placingPosition), tuple(inputs.endEffectorOffset)
+        self.orientation = tuple(inputs.endEffectorOrientation)
         self.events_dt = tuple(inputs.eventsDT)
         self.reset()
 
@@ -54,10 +56,10 @@ class InlineScript:
             log.info("phase %s %s: gripper %s", self.reported, self._event_names[self.reported], status)
         if routine.done:
             return
-        self.arm = self.arm or self._arm_type(world, self.robot)
+        self.arm = self.arm or self._arm_type(world, self.robot, self.gripper)
         kind, tip = routine.step(picking, self.placing, self.offset)
         if kind == "move":
-            self.arm.move_tip(tip)
+            self.arm.move_tip(tip, self.orientation)
         elif kind == "close":
             self.manager.close_gripper(self.gripper)
         elif kind == "open":

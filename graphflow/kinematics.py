@@ -63,6 +63,7 @@ class Joint:
     axis: tuple[float, float, float]
     lower: float
     upper: float
+    rotation: tuple[float, ...] | None = None   # the origin's rotation as a row-major 3x3 (instead of rpy)
 
 
 @dataclass(frozen=True)
@@ -82,14 +83,15 @@ class SerialChain:
     arithmetic, and the controllers solve on every tick.
     """
 
-    def __init__(self, joints: Sequence[Joint], tool_xyz=(0.0, 0.0, 0.0), tool_rpy=(0.0, 0.0, 0.0)):
+    def __init__(self, joints: Sequence[Joint], tool_xyz=(0.0, 0.0, 0.0), tool_rpy=(0.0, 0.0, 0.0),
+                 tool_rotation: tuple[float, ...] | None = None):
         self.joints = tuple(joints)
         self.names = tuple(j.name for j in self.joints)
         self.lower = tuple(float(j.lower) for j in self.joints)
         self.upper = tuple(float(j.upper) for j in self.joints)
         self._links = tuple(_Link.of(j) for j in self.joints)
         self._tool_xyz = tuple(float(c) for c in tool_xyz)
-        self._tool_rotation = _rpy_rotation(tool_rpy)
+        self._tool_rotation = tuple(tool_rotation) if tool_rotation is not None else _rpy_rotation(tool_rpy)
         self._last_pose: tuple = ((), None)     # (joint positions, their _pose): a warm start begins where a solve ended
 
     def _pose(self, positions):
@@ -179,7 +181,10 @@ class _Link:
         norm = math.sqrt(sum(c * c for c in joint.axis))
         axis = tuple(float(c) / norm for c in joint.axis)
         principal = axis.index(1.0) if axis in ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)) else None
-        rotation = None if tuple(joint.rpy) == (0.0, 0.0, 0.0) else _rpy_rotation(joint.rpy)
+        if joint.rotation is not None:
+            rotation = None if tuple(joint.rotation) == _IDENTITY else tuple(float(c) for c in joint.rotation)
+        else:
+            rotation = None if tuple(joint.rpy) == (0.0, 0.0, 0.0) else _rpy_rotation(joint.rpy)
         x, y, z = (float(c) for c in joint.xyz)
         ax, ay, az = axis
         return cls((x, y, z), rotation, (ax, ay, az), principal)

@@ -1,4 +1,4 @@
-"""The pick-and-place phase machine, the UR10 arm driver and the exec handling shared by
+"""The pick-and-place phase machine and the exec handling shared by
 PickPlaceController and StackingController. Not a node type (the leading underscore keeps the
 registry away).
 
@@ -11,10 +11,10 @@ from __future__ import annotations
 
 import math
 
-from graphflow.poses import relative
 from graphflow.spec import Attribute
 from graphflow.types import ExecState
 from graphflow.world import WorldError
+from graphflow_nodes._arm import Arm
 
 UR10_EVENTS_DT = (0.01, 0.0035, 0.01, 1.0, 0.008, 0.005, 0.005, 1.0, 0.01, 0.08)
 PHASE_COUNT = 10
@@ -28,8 +28,8 @@ CARRY_EVENTS = (5, 6)        # move_to_place, descend_to_place: the object must 
 LAST_EVENT = 9               # hold_above_place: when it ends, the object rests where it was put
 DEFAULT_PLACE_TOLERANCE = 0.02
 DEFAULT_INITIAL_HEIGHT = 0.3
-# graphflow.kinematics.SUCTION_DOWN (ee_link +X, the suction axis, pointing down), written out so that loading
-# the node registry does not load the IK solver: UR10Arm imports it on first use
+# graphflow.kinematics.SUCTION_DOWN (the attachment frame's +X, the suction axis, pointing down), written out so
+# that loading the node registry does not load the IK solver: Arm imports it on first use
 SUCTION_DOWN = (0.0, math.sqrt(0.5), 0.0, math.sqrt(0.5))
 
 
@@ -104,46 +104,6 @@ class PickPlaceRun:
         return action
 
 
-class UR10Arm:
-    """Turns world-frame suction-tip targets into UR10 joint position targets, through the world.
-
-    IK runs on a kinematic copy of the arm (graphflow.kinematics), warm-started
-    from the previous solution, so it never touches the simulated state. A
-    target equal to the last one solved keeps its solution: solving again from
-    it would return it unchanged.
-    """
-
-    def __init__(self, world, robot_path: str):
-        from graphflow.kinematics import ur10_chain
-
-        self.world = world
-        self.robot_path = robot_path
-        self.chain = ur10_chain()
-        names = world.joint_names(robot_path)
-        missing = [name for name in self.chain.names if name not in names]
-        if missing:
-            raise ValueError(f"{robot_path} is not a UR10: no joint {', '.join(missing)}")
-        self.indices = [names.index(name) for name in self.chain.names]
-        self.base_pose = world.prim_pose(robot_path)
-        current = world.joint_positions(robot_path)
-        self.solution = tuple(current[i] for i in self.indices)
-        self._solved_for = None
-
-    def move_tip(self, tip, orientation=SUCTION_DOWN) -> tuple[float, ...]:
-        """Solve IK for the tip (world frame) and send the joint targets; returns them."""
-        target = (tuple(tip), tuple(orientation))
-        if target != self._solved_for:
-            local_position, local_orientation = relative(self.base_pose, target)
-            solution = self.chain.inverse(local_position, local_orientation, self.solution)
-            if not solution.converged:
-                raise ValueError(f"cannot reach tool target {tuple(round(c, 4) for c in tip)}: "
-                                 f"IK left {solution.position_error * 1000:.1f} mm")
-            self.solution = solution.positions
-            self._solved_for = target
-        self.world.set_joint_targets(self.robot_path, self.indices, positions=self.solution)
-        return self.solution
-
-
 def gripper_manager(world):
     """The world's surface-gripper manager (a service of the world, created on first use from its stage)."""
     from graphflow.gripper.manager import SurfaceGripperManager, manager_for
@@ -160,8 +120,8 @@ COMMON_INPUTS = (
     Attribute("reset", "execution", description="Back to the start"),
     Attribute("pause", "execution", description="Stop advancing; the arm holds its targets"),
     Attribute("resume", "execution", description="Continue after a pause"),
-    Attribute("robotPrim", "target", description="The UR10 articulation root"),
-    Attribute("gripperPrim", "target", description="The IsaacSurfaceGripper prim on the UR10"),
+    Attribute("robotPrim", "target", description="The arm's articulation root (the UR10, or any arm whose chain leads to the gripper)"),
+    Attribute("gripperPrim", "target", description="The IsaacSurfaceGripper prim on the arm; its attachment point is the IK's tool frame"),
 )
 MOTION_INPUTS = (
     Attribute("endEffectorOffset", "double[3]", default=(0.0, 0.0, 0.02), description="Added to every tip target (m)"),
@@ -180,7 +140,7 @@ COMMON_OUTPUTS = (
     Attribute("event", "int", description="Current phase 0..9; 10 when done"),
     Attribute("eventName", "token", allowed_tokens=EVENT_NAMES, description="Name of the current phase"),
     Attribute("isDone", "bool", description="True once the routine is complete"),
-    Attribute("jointTargets", "double[]", description="UR10 joint position targets last sent (rad)"),
+    Attribute("jointTargets", "double[]", description="Arm joint position targets last sent (rad), base to tool"),
     Attribute("success", "execution",
               description="Fires once, when the last object was placed within placeTolerance and nothing failed"),
     Attribute("failed", "execution",
@@ -259,7 +219,7 @@ def _advance(db, routine):
     arm = db.internal.get("arm")
     if arm is None or arm.robot_path != robot:
         try:
-            arm = db.internal["arm"] = UR10Arm(db.world, robot)
+            arm = db.internal["arm"] = Arm(db.world, robot, gripper)
         except ValueError as error:
             db.error(f"inputs:robotPrim: {error}")
     kind, tip = routine.step(db)

@@ -1,6 +1,7 @@
 """graphflow.PickPlaceController: Isaac Sim's UR10 pick-and-place controller as one latent node.
 
-It drives the arm itself (UR10 IK on a kinematic copy, joint targets through
+It drives the arm itself (IK on a kinematic copy of the chain from the robot's base to its gripper,
+the UR10's or any converted arm's; joint targets through
 the world's articulation API) and the surface gripper through the world's
 gripper manager; ``jointTargets`` shows what it sent. One advance per tick:
 the first compute of a tick (from execIn, or the latent re-compute) moves the
@@ -24,7 +25,8 @@ SPEC = NodeSpec(
     version=1,
     aliases=("omni.isaac.examples_nodes.IsaacPickPlaceController",),
     description=(
-        "Picks an object at pickingPosition with the UR10's suction gripper and places it at "
+        "Picks an object at pickingPosition with the arm's suction gripper (the UR10's, or any arm's whose "
+        "joints lead from robotPrim to gripperPrim) and places it at "
         "placingPosition, in Isaac Sim's ten phases (move above, descend, settle, close, lift, "
         "move, descend, open, lift, hold). Targets are for the suction tip: xy and height of "
         "each phase plus endEffectorOffset, at endEffectorOrientation. Phase i lasts until "

@@ -27,12 +27,12 @@ __all__ = ["build_parser", "main"]
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from graphflow.cli import editing, graphs, report, run, scenarios, stage, studio, sweep, traces
+    from graphflow.cli import editing, graphs, report, robot, run, scenarios, stage, studio, sweep, traces
 
     parser = argparse.ArgumentParser(prog="graphflow", description="Run, check and inspect graphflow action graphs.")
     parser.add_argument("--version", action="version", version=f"graphflow {__version__}")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
-    for family in (run, traces, report, scenarios, graphs, editing, stage, sweep, studio):
+    for family in (run, traces, report, scenarios, graphs, editing, stage, robot, sweep, studio):
         family.register(commands)
     return parser
 

@@ -17,6 +17,8 @@ from graphflow.cli import arguments
 from graphflow.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_RUN_FAILED
 from graphflow.world import DEFAULT_TIME_STEP
 
+DRIVE_TOLERANCE = 0.01   # rad or m: a drive this near its target after the rest test is "at" it
+
 
 def register(commands) -> None:
     stage = commands.add_parser("stage", help="show what the importer makes of a USD stage")
@@ -74,6 +76,22 @@ def run_stage_command(stage_path: str, as_json: bool, simulate_seconds: float | 
     return EXIT_OK
 
 
+def drives_verdict(report: dict, simulation: dict) -> str:
+    """What the rest test says of the articulations: limp (joints, no drive), or how near the drives held."""
+    movable = sum(len(articulation["movable_joints"]) for articulation in report["articulations"])
+    free = sum(len(articulation["undriven_joints"]) for articulation in report["articulations"])
+    errors = simulation["drive_errors"]
+    if not movable:
+        return "no articulated joints"
+    if not errors:
+        return (f"limp: {movable} articulated joints and no drive, every joint falls free "
+                "(graphflow robot add gives a converted arm drives)")
+    worst = max(errors, key=errors.get)
+    held = (f"drives at their targets (within {DRIVE_TOLERANCE:g})" if errors[worst] <= DRIVE_TOLERANCE
+            else f"drives short of their targets: {worst} {errors[worst]:.4g} from target")
+    return held + (f"; {free} joints without a drive free" if free else "")
+
+
 def print_stage_report(report: dict, simulation: dict | None) -> None:
     """The human-readable summary (and rest test) of ``graphflow stage``."""
     bodies = report["rigid_bodies"]
@@ -108,10 +126,7 @@ def print_stage_report(report: dict, simulation: dict | None) -> None:
         print(f"  {item['path']}: {item['what']}")
     if simulation is not None:
         worst = simulation["max_displacement"]
-        free = sum(len(articulation["undriven_joints"]) for articulation in report["articulations"])
-        held = ("no drives: every joint free" if not simulation["drive_errors"] else "drives at their targets"
-                + (f"; {free} joints without a drive free" if free else ""))
-        print(f"simulated {simulation['seconds']:g} s ({simulation['steps']} steps), {held}")
+        print(f"simulated {simulation['seconds']:g} s ({simulation['steps']} steps), {drives_verdict(report, simulation)}")
         if worst["path"] is not None:
             print(f"  largest displacement of a free body: {worst['path']} moved {worst['distance'] * 1000:.2f} mm")
         for path, distance in simulation["displacements"].items():

@@ -9,7 +9,8 @@ from graphflow.document import dumps, load_document, parse_document
 from graphflow.inputs.keyboard import attach_keyboard, scripted_keys
 from graphflow.runtime import Simulation
 
-ROBOT_GRAPHS = ["ur10_pick_place.json", "ur10_pick_place_tuned.json", "ur10_stacking.json", "gantry_keyboard.json"]
+ROBOT_GRAPHS = ["ur10_pick_place.json", "ur10_pick_place_tuned.json", "ur10_stacking.json", "gantry_keyboard.json",
+                "panda_pick_place.json"]
 
 
 def _run(name, seconds=60.0):
