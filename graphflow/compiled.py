@@ -63,7 +63,9 @@ class CompiledGraph:
             )
             for i, node in enumerate(document.nodes)
         )
-        self.event_sources = tuple(n.index for n in self.nodes if n.spec.is_event_source)
+        self.event_sources = tuple(n.index for n in self.nodes
+                                   if n.spec.is_event_source and not n.spec.fires_at_run_end)
+        self.run_end_sources = tuple(n.index for n in self.nodes if n.spec.fires_at_run_end)
         self.exec_input_names = tuple(tuple(a.name for a in n.spec.exec_inputs) for n in self.nodes)
         self.exec_output_names = tuple(tuple(a.name for a in n.spec.exec_outputs) for n in self.nodes)
         # exec stack entries are (node index, enabled exec input names): () for an event source or a re-entry

@@ -288,6 +288,15 @@ class GraphInstance:
             if index in latent:
                 run_from(entries[index])
 
+    def end_run(self) -> None:
+        """The run is over (after its last tick): the run-end event sources (OnClosing) compute, once."""
+        if not self.compiled.run_end_sources:
+            return
+        self._start_tick_epoch()
+        self._computes_this_tick = 0
+        for index in self.compiled.run_end_sources:
+            self._run_from(self.compiled.plain_entries[index])
+
     def _start_tick_epoch(self) -> None:
         self._exec_epoch += 1
         self._tick_epoch = self._exec_epoch

@@ -123,11 +123,15 @@ class Simulation:
         return limit
 
     def run(self, *, ticks: int | None = None, seconds: float | None = None) -> RunResult:
-        """Step until the tick limit, the time limit, or a graph asks to stop; then ``on_end``."""
+        """Step until the tick limit, the time limit, or a graph asks to stop; then the run-end event
+        sources (OnClosing) of each instance compute once, and ``on_end``."""
         limit = self.tick_limit(ticks=ticks, seconds=seconds)
         result = None
         try:
-            result = self._run(limit)
+            outcome = self._run(limit)
+            for instance in self.instances:
+                instance.end_run()
+            result = outcome
         finally:
             for listener in list(self.listeners):
                 on_end = getattr(listener, "on_end", None)

@@ -6,9 +6,13 @@ import sys
 from importlib.machinery import ModuleSpec
 from typing import Any
 
+_run_seed = 0
+
 
 def seed_everything(seed: int) -> None:
     """Seed Python's and (when a graph imports it) numpy's global generators, as ``graphflow run --seed`` does."""
+    global _run_seed
+    _run_seed = seed
     random.seed(seed)
     _seed_numpy(seed)
 
@@ -42,6 +46,11 @@ class _SeedNumpyOnImport:
 
             spec.loader.exec_module = exec_and_seed  # type: ignore[method-assign]  # seeding as numpy.random loads
         return spec
+
+
+def run_seed() -> int:
+    """The seed of the current run (``--seed``; 0 until one is given): nodes that draw numbers derive theirs from it."""
+    return _run_seed
 
 
 def _seed_numpy(seed: int) -> None:

@@ -120,6 +120,7 @@ class NodeSpec:
     aliases: tuple[str, ...] = ()       # legacy ids that load as this type
     ui_name: str = ""
     compatible_versions: tuple[int, ...] = ()  # older typeVersions files may name
+    fires_at_run_end: bool = False      # an event source computed once when a run ends, not on ticks (OnClosing)
     _by_name: dict | None = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self):

@@ -46,6 +46,7 @@ SCALAR_KINDS = {
     "float": "real",
     "double": "real",
     "half": "real",
+    "timecode": "real",
     "token": "str",
     "string": "str",
     "path": "str",
@@ -55,7 +56,8 @@ TUPLE_BASES = {"double", "float", "half", "int"}
 TUPLE_ROLES = {"quatd": "double", "quatf": "float", "quath": "half",
                "vectord": "double", "vectorf": "float", "pointd": "double", "pointf": "float",
                "normald": "double", "normalf": "float", "colord": "double", "colorf": "float",
-               "matrixd": "double"}
+               "matrixd": "double", "colorh": "half", "normalh": "half", "pointh": "half", "vectorh": "half",
+               "texcoordd": "double", "texcoordf": "float", "texcoordh": "half"}
 
 # the values each scalar type can hold (OmniGraph's int and uint are 32-bit, float is 32-bit IEEE)
 INTEGER_RANGES = {"uchar": (0, 255), "int": (-2**31, 2**31 - 1), "int64": (-2**63, 2**63 - 1), "uint": (0, 2**32 - 1),

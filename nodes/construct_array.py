@@ -24,7 +24,8 @@ SPEC = NodeSpec(
         f"outputs:array = (input0, ..., input<arraySize-1>), arraySize 0..{MAX_INPUTS}. "
         "With arrayType 'auto' the elements are taken as given and every one of them "
         "must be set; with an explicit type (e.g. 'double[]', 'token[]', 'double[3][]') "
-        "each element is converted to the element type and unset inputs give its zero."),
+        "each element is converted to the element type and unset inputs give its zero; an element Kit "
+        "saved as token text while its type was unresolved ('-0.9', '(1, 2, 3)') is read as that type."),
     categories=("math:array",),
     ui_name="Make Array",
     inputs=(
@@ -40,6 +41,16 @@ SPEC = NodeSpec(
         Attribute("array", "any", description="The constructed array"),
     ),
 )
+
+
+def _from_text(text: str):
+    """A number, bool or tuple Kit wrote as token text ('-0.9', 'true', '(1, 2, 3)'); the text itself if none."""
+    words = [w.strip() for w in text.strip().strip("()[]").split(",")]
+    try:
+        values = [w.lower() == "true" if w.lower() in ("true", "false") else float(w) for w in words]
+    except ValueError:
+        return text
+    return tuple(values) if len(values) > 1 or text.strip().startswith(("(", "[")) else values[0]
 
 
 def compute(db):
@@ -68,7 +79,8 @@ def compute(db):
             items.append(element.default_value())
         else:
             try:
-                items.append(element.coerce(value))
+                items.append(element.coerce(_from_text(value) if isinstance(value, str) and element.base
+                                            not in ("token", "string") else value))
             except TypeMismatch as error:
                 db.error(f"inputs:input{i} does not fit arrayType {array_type}: {error}")
                 return

@@ -6,10 +6,12 @@ import contextlib
 import logging
 import sys
 import time
+from pathlib import Path
 
 from graphflow.cli import arguments
+from graphflow.cli.watch import add_watch_option
 from graphflow.document import load_document
-from graphflow.errors import EXIT_OK, EXIT_RUN_FAILED, BadInput
+from graphflow.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_RUN_FAILED, BadInput
 from graphflow.files import atomic_output, refuse_existing
 
 
@@ -69,6 +71,7 @@ def register(commands) -> None:
                      help="camera yaw in degrees (default 50)")
     run.add_argument("--camera-pitch", type=arguments.finite_float, default=-30.0, metavar="DEG",
                      help="camera pitch in degrees (default -30)")
+    add_watch_option(run, "the graph, its stage (and the stage's local layers) or a scripted-input file")
     run.set_defaults(handler=command_run)
 
 
@@ -96,6 +99,24 @@ def _changed_by_options(args) -> list[str]:
 
 
 def command_run(args) -> int:
+    if not args.watch:
+        return run_once(args)
+    from graphflow.cli.watch import watch
+    from graphflow.watching import Watcher, graph_files
+
+    def files() -> list:
+        named = [args.keys, args.gamepad, args.topics, args.randomize]
+        return list(dict.fromkeys([*graph_files(args.graph), *(Path(name) for name in named if name)]))
+
+    def after_run(code: int) -> None:
+        if code != EXIT_BAD_INPUT:   # the run wrote its outputs: the next run replaces them
+            args.force = True
+
+    return watch(lambda: run_once(args), Watcher(files), title=f"graphflow run {args.graph}", after_run=after_run)
+
+
+def run_once(args) -> int:
+    """One ``graphflow run``: exit 0 when it passed, 1 when it failed; bad input raised."""
     from graphflow.observe.terminal import PrintedLog, Progress, RealTimePacer
     from graphflow.variants.randomize import variant_for_run
     from graphflow.verdicts.checked_run import CheckedRun, RunLimits

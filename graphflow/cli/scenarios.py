@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 from graphflow.cli import arguments
+from graphflow.cli.watch import add_watch_option
 
 
 def register(commands) -> None:
@@ -24,6 +25,7 @@ def register_test(commands) -> None:
     test.add_argument("--min-pass-rate", type=arguments.probability, metavar="P",
                       help="gate of rate scenarios that declare no minPassRate (default 0.8): the Wilson lower bound must reach it")
     test.add_argument("--ray", action="store_true", help="run rate scenarios' episodes on Ray (default: local worker processes)")
+    add_watch_option(test, "a scenario, table, stage or scripted-input file under the paths")
     test.set_defaults(handler=command_test)
 
 
@@ -58,4 +60,15 @@ def command_test(args) -> int:
     from graphflow.sweep.scenario_rates import run_rate
     from graphflow.verdicts.suite import command_test as run_suite
 
-    return run_suite(args, rate_runner=run_rate)
+    if not args.watch:
+        return run_suite(args, rate_runner=run_rate)
+    from graphflow.cli.watch import watch
+    from graphflow.errors import EXIT_BAD_INPUT
+    from graphflow.watching import Watcher, paths_files
+
+    def after_run(code: int) -> None:
+        if code != EXIT_BAD_INPUT:   # the suite wrote its --junit and --reports: the next run replaces them
+            args.force = True
+
+    return watch(lambda: run_suite(args, rate_runner=run_rate), Watcher(lambda: paths_files(args.paths)),
+                 title=f"graphflow test {' '.join(args.paths)}", after_run=after_run)

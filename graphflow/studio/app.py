@@ -60,14 +60,15 @@ async def _body(request: Request) -> dict:
 async def stream_live(websocket: WebSocket, path, folder) -> None:
     """Run *path* live for one page: its commands in, the run's frames out, until the page goes."""
     from graphflow.report.build import json_safe  # NaN and infinities as the report writes them
+    from graphflow.studio.frames import Outbox
     from graphflow.studio.live import LiveRun, report_path
 
-    loop, outbox = asyncio.get_running_loop(), asyncio.Queue()
-    run = LiveRun(path, lambda message: loop.call_soon_threadsafe(outbox.put_nowait, message))
+    loop, outbox = asyncio.get_running_loop(), Outbox()
+    run = LiveRun(path, lambda message: loop.call_soon_threadsafe(outbox.put, message))
 
     async def send_frames():
         while True:
-            message = await outbox.get()
+            message = await outbox.take()
             await websocket.send_text(json.dumps(json_safe(message), separators=(",", ":")))
 
     sender = asyncio.create_task(send_frames())
@@ -77,7 +78,7 @@ async def stream_live(websocket: WebSocket, path, folder) -> None:
                 message = json.loads(await websocket.receive_text())
                 _live_message(run, message, folder, report_path)
             except (ValueError, BadInput, KeyError, TypeError) as error:
-                outbox.put_nowait({"type": "error", "message": f"bad live message: {error}"})
+                outbox.put({"type": "error", "message": f"bad live message: {error}"})
     except WebSocketDisconnect:
         pass
     finally:
@@ -123,8 +124,15 @@ def build_app(session: Session, hosts: set[str]) -> Guard:
         return JSONResponse({"path": session.folder.relative(path), "layout": editing.drawn_layout(opened["data"], path),
                              **opened})
 
+    watching: dict = {}   # graph path -> graphflow.watching.WatchedFiles, kept between the page's polls
+
     async def watched(request: Request):
-        return JSONResponse(editing.watched_revision(session.folder.resolve(request.query_params.get("path", ""))))
+        from graphflow.watching import WatchedFiles, graph_files
+
+        path = session.folder.resolve(request.query_params.get("path", ""))
+        if path not in watching:   # off the event loop: the first look opens the stage's layers
+            watching[path] = await asyncio.to_thread(WatchedFiles, lambda: graph_files(path))
+        return JSONResponse(await asyncio.to_thread(editing.watched_revision, path, watching[path]))
 
     async def check(request: Request):
         body = await _body(request)

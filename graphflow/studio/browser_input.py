@@ -3,15 +3,17 @@
 The page sends what the browser reports (``KeyboardEvent.code``: ``KeyA``, ``ArrowUp``, ``ShiftLeft``);
 here it becomes Kit's key names (``A``, ``Up``, ``LeftShift``), the tokens ``OnKeyboardInput`` reads,
 so a graph sees the same keys from a browser tab as from the PyBullet window. Events arrive on the
-server's thread and are polled by the run's thread at its next physics step.
+server's thread and are polled by the run's thread at its next physics step. What each poll handed
+over is kept, with the simulated time of the poll, as a scripted timeline (``timeline()``): replayed,
+it gives the run exactly the same input, which is how a live run's trace is made again when saved.
 """
 from __future__ import annotations
 
 import threading
 
 from graphflow.errors import BadInput
-from graphflow.inputs.gamepad import ELEMENTS, value_range
-from graphflow.inputs.keyboard import KEY_TOKENS
+from graphflow.inputs.gamepad import ELEMENTS, PadChange, ScriptedPad, value_range
+from graphflow.inputs.keyboard import KEY_TOKENS, KeyAction, ScriptedKeys
 
 _NAMED_CODES = {
     "ArrowUp": "Up", "ArrowDown": "Down", "ArrowLeft": "Left", "ArrowRight": "Right", "Delete": "Del",
@@ -43,6 +45,7 @@ class _Pending:
     def __init__(self):
         self._lock = threading.Lock()
         self._changes: list = []
+        self.delivered: list[tuple[float, list]] = []   # (simulated time of the poll, what it handed over)
 
     def push(self, change) -> None:
         with self._lock:
@@ -51,12 +54,15 @@ class _Pending:
     def poll(self, time: float) -> list:
         with self._lock:
             changes, self._changes = self._changes, []
+        if changes:
+            self.delivered.append((time, changes))
         return changes
 
     def rewind(self) -> None:
         """A reset run starts with no queued input (keys still held in the page are sent again when released)."""
         with self._lock:
             self._changes = []
+        self.delivered = []
 
 
 class BrowserKeys(_Pending):
@@ -68,6 +74,11 @@ class BrowserKeys(_Pending):
             raise BadInput(f"key {code!r}: not a key OnKeyboardInput knows (Kit key names)")
         self.push((key, bool(down)))
         return key
+
+    def timeline(self) -> ScriptedKeys:
+        """The keys delivered so far as a scripted timeline: each transition at the time of the poll that got it."""
+        return ScriptedKeys([KeyAction(key, time, "down" if down else "up")
+                             for time, changes in self.delivered for key, down in changes])
 
 
 class BrowserPad(_Pending):
@@ -82,3 +93,8 @@ class BrowserPad(_Pending):
         if isinstance(value, bool) or not isinstance(value, (int, float)) or not low <= value <= high:
             raise BadInput(f"gamepad {element}: {value!r} is outside [{low}, {high}]")
         self.push((0, element, float(value)))
+
+    def timeline(self) -> ScriptedPad:
+        """The pad changes delivered so far as a scripted timeline, each at the time of the poll that got it."""
+        return ScriptedPad([PadChange(element, value, time, pad)
+                            for time, changes in self.delivered for pad, element, value in changes])

@@ -113,23 +113,15 @@ def drawn_layout(data, path: Path) -> dict:
     return {node["name"]: [node["x"], node["y"]] for node in graph_layout(document)["nodes"]}
 
 
-def watched_revision(path: Path) -> dict:
-    """What the page polls to reload and re-run: the graph's revision and its stage file's (size, mtime), cheaply."""
-    from graphflow.usd.resolver import resolve_stage
+def watched_revision(path: Path, watched) -> dict:
+    """What the page polls to reload and re-run: the graph's revision, and one of every other file the run reads.
 
-    text = _on_disk(path)
-    stage = None
-    if text is not None and _is_json(text):
-        data = json.loads(text)
-        settings = data.get("settings") if isinstance(data, dict) else None
-        name = settings.get("stage") if isinstance(settings, dict) else None
-        if isinstance(name, str) and name:
-            try:
-                found = resolve_stage(name, path.parent).stat()
-                stage = f"{found.st_size}:{found.st_mtime_ns}"
-            except (OSError, BadInput):
-                stage = "missing"
-    return {"revision": revision(text), "stage": stage}
+    *watched* is the graph's ``graphflow.watching.WatchedFiles`` (the same files ``run --watch`` watches:
+    stage, its local layers, scripted-input files), kept between polls so a stage is not reopened each time.
+    """
+    others = {name: state for name, state in watched.state().items() if name != str(path)}
+    return {"revision": revision(_on_disk(path)),
+            "stage": revision(json.dumps(others, sort_keys=True)) if others else None}
 
 
 @dataclass(frozen=True)

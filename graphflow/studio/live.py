@@ -1,10 +1,11 @@
 """A graph running live for the studio: its own thread, driven by play/pause/step/reset/speed, streamed in frames.
 
-The run is ``graphflow run``'s checked run (preflight, world, checks, the report's in-memory trace)
-with the browser as keyboard and gamepad. Its thread owns the simulation (PyBullet is not shared
-between threads); commands arrive through a queue. What changed is sent as one frame at most every
-``FRAME_SECONDS`` of wall time, never once a tick, however fast the run goes: the tick range, the
-outputs whose value changed (last value), the nodes that computed, gripper fields, body poses, log lines.
+The run is ``graphflow run``'s checked run (preflight, world, checks) with the browser as keyboard
+and gamepad. Its thread owns the simulation (PyBullet is not shared between threads); commands
+arrive through a queue. At most every ``FRAME_SECONDS`` of wall time, never once a tick, a frame is
+sampled from the latest state (``graphflow.studio.frames``): ticking costs what it costs headless
+plus the checks, nothing is recorded per tick. Saving the trace or report replays the run with the
+input it was fed (``graphflow.studio.replay``), which gives the identical trace.
 """
 from __future__ import annotations
 
@@ -19,10 +20,11 @@ from typing import Callable
 from graphflow.document import load_document
 from graphflow.errors import BadInput, GraphflowError
 from graphflow.studio.browser_input import BrowserKeys, BrowserPad
+from graphflow.studio.frames import FrameSampler
+from graphflow.studio.replay import LiveInputs, save_replayed
 
 FRAME_SECONDS = 1 / 30
 logger = logging.getLogger(__name__)
-MAX_LOG_LINES = 200
 
 
 class LiveRun:
@@ -61,7 +63,6 @@ class LiveRun:
 
     def _load(self) -> None:
         from graphflow.report.build import run_data
-        from graphflow.report.recording import ReportRecording
         from graphflow.verdicts.checked_run import CheckedRun, ScriptedInputs
 
         document = load_document(self.path)
@@ -70,21 +71,19 @@ class LiveRun:
                                   inputs=replace(scripted, keys=self.keys, pad=self.pad))
         self.checked.preflight()
         self.simulation = self.checked.start()
-        self.recording = ReportRecording(self.simulation, str(self.path))
+        self.sampler = FrameSampler(self.simulation)
         self.limit = self.checked.tick_limit()
-        self.ended, self.failure, self._sent = None, None, 0
-        self.publish({"type": "start", "run": run_data(self.recording.trace(), document), "limit": self.limit})
+        self.ended = None
+        self.publish({"type": "start", "run": run_data(_tick_zero(self.simulation, str(self.path)), document),
+                      "limit": self.limit})
 
     def _loop(self) -> None:
         next_frame = time.monotonic()
         while True:
-            timeout = 0.0 if self._running() else None
-            if self._running() and self.speed is not None:
-                timeout = max(0.0, self._due - time.monotonic())
-            try:
-                name, fields = self._commands.get(timeout=timeout) if timeout != 0.0 else self._commands.get_nowait()
-            except queue.Empty:
-                name, fields = None, {}
+            timeout = None
+            if self._running():
+                timeout = 0.0 if self.speed is None else max(0.0, self._due - time.monotonic())
+            name, fields = self._next_command(timeout)
             if name == "close":
                 return
             if name is not None:
@@ -92,13 +91,34 @@ class LiveRun:
                 self._frame()
                 next_frame = time.monotonic() + FRAME_SECONDS
                 continue
-            if self._running() and (self.speed is None or time.monotonic() >= self._due):
-                self._tick()
-                if self.speed is not None:
-                    self._due += self.simulation.world.time_step / self.speed
+            if self._running():
+                self._ticks_until(next_frame)
             if time.monotonic() >= next_frame or not self._running():
                 self._frame()
                 next_frame = time.monotonic() + FRAME_SECONDS
+
+    def _next_command(self, timeout: float | None) -> tuple[str | None, dict]:
+        """The next command, waiting up to *timeout* s (None: until one comes); (None, {}) when none came."""
+        if timeout == 0.0 and self._commands.empty():
+            return None, {}
+        try:
+            return self._commands.get(timeout=timeout or None) if timeout != 0.0 else self._commands.get_nowait()
+        except queue.Empty:
+            return None, {}
+
+    def _ticks_until(self, next_frame: float) -> None:
+        """Tick while no frame is due and no command waits: at max speed every tick due, in real time the next one."""
+        commands, clock = self._commands, time.monotonic
+        while self._running() and commands.empty():
+            if self.speed is not None:
+                if clock() < self._due:
+                    return
+                self._tick()
+                self._due += self.simulation.world.time_step / self.speed
+            else:
+                self._tick()
+            if clock() >= next_frame:
+                return
 
     def _running(self) -> bool:
         return self.playing and self.ended is None
@@ -142,7 +162,6 @@ class LiveRun:
             if on_end is not None:
                 on_end(self.simulation, result)
         failures = [failure] if failure else [str(f) for f in self.checked.evaluator.finish(self.simulation, result)]
-        self.failure = failure
         self.ended = {"passed": not failures, "failures": failures, "checks": len(self.checked.evaluator)}
         self.playing = False
 
@@ -153,37 +172,41 @@ class LiveRun:
         self._load()
 
     def _save(self, name: str, path: Path) -> None:
-        from graphflow.observe.trace import dumps_record
-
-        if name == "saveReport":
-            evaluator = self.checked.evaluator if self.ended is not None else None
-            self.recording.write(path, self.checked.document, evaluator=evaluator, runtime_failure=self.failure,
-                                 seed=self.checked.seed, force=True)
-        else:
-            from graphflow.files import write_text
-
-            write_text(path, "".join(dumps_record(record) + "\n" for record in self.recording.records), force=True)
+        """The trace or report of the ticks so far, made again from the input delivered; a failure is told, the run goes on."""
+        inputs = LiveInputs(self.checked.document, str(self.path), self.keys.timeline(), self.pad.timeline())
+        try:
+            save_replayed(inputs, name, path, ticks=self.simulation.tick_count, ended=self.ended is not None)
+        except GraphflowError as error:   # the stage went from disk since the run started, the folder is read-only...
+            self.publish({"type": "error", "message": f"{path.name} not saved: {error}"})
+            return
         self.publish({"type": "saved", "what": name, "path": path.name})
 
     def _frame(self) -> None:
-        """Everything recorded since the last frame, merged into one message."""
-        records = self.recording.records[1 + self._sent:]
-        self._sent += len(records)
-        frame: dict = {"type": "frame", "tick": self.simulation.tick_count, "time": self.simulation.world.time,
-                       "playing": self._running(), "speed": self.speed, "ended": self.ended,
-                       "outputs": {}, "computed": [], "grippers": {}, "poses": {}, "log": []}
-        computed: set[str] = set()
-        for record in records:
-            frame["outputs"].update(record.get("outputs", {}))
-            computed.update(record.get("computed", ()))
-            for path, fields in record.get("grippers", {}).items():
-                frame["grippers"].setdefault(path, {}).update(fields)
-            frame["poses"].update(record.get("poses", {}))
-            frame["log"].extend([record["tick"], line["node"], line["level"], line["message"]]
-                                for line in record.get("log", ()))
-        frame["computed"] = sorted(computed)
-        frame["log"] = frame["log"][-MAX_LOG_LINES:]
-        self.publish(frame)
+        """What changed since the last frame, sampled from the simulation as it is now."""
+        self.publish({"type": "frame", "tick": self.simulation.tick_count, "time": self.simulation.world.time,
+                      "playing": self._running(), "speed": self.speed, "ended": self.ended, **self.sampler.frame()})
+
+
+class _Unlistened:
+    """A simulation as a header-only recorder sees it: everything but ``add_listener`` (it records no tick)."""
+
+    def __init__(self, simulation):
+        self._simulation = simulation
+
+    def __getattr__(self, name: str):
+        return getattr(self._simulation, name)
+
+    def add_listener(self, listener) -> None:
+        """Not attached: the live run records nothing per tick."""
+
+
+def _tick_zero(simulation, graph: str):
+    """The trace of tick 0 (its header: graph, scene, starting values) that the page's ``start`` message draws."""
+    from graphflow.observe.trace import Trace, TraceRecorder
+
+    records: list[dict] = []
+    TraceRecorder(_Unlistened(simulation), None, graph=graph, records=records)
+    return Trace(records[0], [])
 
 
 def report_path(folder, relative: str) -> Path:

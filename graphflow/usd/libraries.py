@@ -14,18 +14,35 @@ from dataclasses import dataclass
 
 from graphflow.usd.node_mapping import RENDERING_NODES
 
+MOUSE = ("graphflow scripts the keyboard and gamepad (--keys, --pad) but has no mouse service yet; headless "
+         "it would never fire")
 HOST = "reads the host machine (environment, files, wall clock): not reproducible, so not carried over"
 PRIM_SERVICES = ("serves Isaac's own isaac_ros2_messages service types (prim list, attribute read/write), "
                  "defined in Isaac's ROS workspace, not among graphflow's service types yet")
 TEST_ONLY = "Isaac's internal test node"
 EDITOR = "sets up a robot in the editor, not at run time"
-CLOSING = "fires while Kit shuts down; a graphflow run ends without a further tick to fire it in"
-EULER = "takes or gives Euler angles whose units and axis order Kit's reference pages do not state"
 TF_DRIVEN = ("places prims at the poses /tf carries by switching off their articulations, joints and rigid "
              "bodies, which graphflow's world cannot do while running")
 PRIM_EDIT = "changes the stage's prims while running, which graphflow's world does not do"
 BUNDLES = "works on Kit attribute bundles, which graphflow does not have"
 GRAPH_TARGETS = "a numeric id of the graph target (Kit's internal prim handle); GraphTarget gives its path"
+VARIANTS = ("reads or switches USD variant selections; graphflow composes the stage once, at load, with the "
+            "selections the file authors")
+GEOMETRY = "builds curve or tube geometry for display, which graphflow's world neither renders nor simulates"
+TIMELINE = ("drives Kit's playback timeline (play, stop, loop, seek); a graphflow run's clock is the simulation's "
+            "and only moves forward")
+SETTINGS = "reads or writes Kit's settings registry, which a graphflow run does not have"
+SELECTION = "reads the editor's prim selection (no editor headless)"
+MATERIALS = "reads or binds render materials, which only Kit's renderer uses"
+MANEUVER = ("animates a prim's xform ops over several ticks as an editor animation; graphflow's bodies move by "
+            "physics (WritePrimLocalTransform places a free body)")
+GRAPH_VALUES = "reads any node's attribute by path through Kit's runtime store; graphflow graphs read outputs through connections"
+APPEND_ARRAY = "its input ports are not on Kit's reference pages this project could read; not carried over yet"
+LOOK_AT = ("Kit's reference does not say whether its matrix is the eye's world transform or the view "
+           "(world-to-eye) matrix, its inverse")
+GAUSSIAN = "its standard-deviation port is not on Kit's reference pages this project could read"
+NTH_ROOT = "its output port is not on Kit's reference pages this project could read"
+NOISE = "Kit's reference pages do not state its noise function, so values would not match Kit's"
 
 _ISAAC_CORE = "isaacsim.core.nodes"
 _ROS2 = "isaacsim.ros2.bridge"
@@ -41,47 +58,80 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
     "omni.graph.action": _ids("omni.graph.action", {
         "AddPrimRelationship": PRIM_EDIT, "Branch": None, "Countdown": None, "Counter": None, "Delay": None,
         "ExitApplication": None, "FlipFlop": None, "ForEach": None, "ForEachTarget": None, "ForLoop": None,
-        "Gate": None, "Multigate": None, "Multisequence": None, "OnClosing": CLOSING, "OnCustomEvent": None,
+        "Gate": None, "Multigate": None, "Multisequence": None, "OnClosing": None, "OnCustomEvent": None,
         "OnGamepadInput": None, "OnImpulseEvent": None, "OnKeyboardInput": None, "OnLoaded": None,
-        "OnMessageBusEvent": None, "OnMouseInput": "needs Kit's viewport mouse (no GUI headless)",
+        "OnMessageBusEvent": None, "OnMouseInput": MOUSE,
         "OnObjectChange": None, "OnPlaybackTick": None, "OnStageEvent": None, "OnTick": None,
         "OnVariableChange": None, "Once": None, "RationalTimeSyncGate": None, "SendCustomEvent": None,
         "SendMessageBusEvent": None, "Sequence": None, "SetPrimActive": PRIM_EDIT, "SwitchToken": None,
         "SyncGate": None}),
     "omni.graph.nodes": _ids("omni.graph.nodes", {
-        "ATan2": None, "Absolute": None, "Acos": None, "Add": None, "AppendPath": None, "AppendString": None,
-        "ArrayFill": None, "ArrayFindValue": None, "ArrayGetSize": None, "ArrayIndex": None,
-        "ArrayInsertValue": None, "ArrayRemoveIndex": None, "ArrayRemoveValue": None, "ArrayResize": None,
-        "ArrayReverse": None, "ArrayRotate": None, "ArraySetIndex": None, "Asin": None, "Atan": None,
+        "Absolute": None, "Acos": None, "Add": None, "AnyZero": None, "AppendArray": APPEND_ARRAY, "AppendPath": None,
+        "AppendString": None, "AppendTargetPaths": None, "AppendTargets": None, "ArrayAppendValue": None,
+        "ArrayFill": None, "ArrayFindValue": None, "ArrayGetSize": None, "ArrayIndex": None, "ArrayInsertValue": None,
+        "ArrayLength": BUNDLES, "ArrayRemoveIndex": None, "ArrayRemoveValue": None, "ArrayReplaceValue": None,
+        "ArrayResize": None, "ArrayReverse": None, "ArrayRotate": None, "ArraySetIndex": None, "ArraySlice": None,
+        "Asin": None, "Atan": None, "ATan2": None, "AttributeType": BUNDLES, "BlendVariants": VARIANTS,
         "BooleanAnd": None, "BooleanExpr": None, "BooleanNand": None, "BooleanNor": None, "BooleanNot": None,
-        "BooleanOr": None, "BooleanXor": None, "BreakVector2": None, "BreakVector3": None, "BreakVector4": None,
-        "BuildString": None, "CapitalizeString": None, "Ceil": None, "Clamp": None, "Compare": None,
-        "ConstantBool": None, "ConstantColor3d": None, "ConstantColor3f": None, "ConstantColor4d": None,
-        "ConstantColor4f": None, "ConstantDouble": None, "ConstantDouble2": None, "ConstantDouble3": None,
-        "ConstantDouble4": None, "ConstantFloat": None, "ConstantFloat2": None, "ConstantFloat3": None,
-        "ConstantFloat4": None, "ConstantHalf": None, "ConstantHalf2": None, "ConstantHalf3": None,
+        "BooleanOr": None, "BooleanXor": None, "BreakMatrix2": None, "BreakMatrix3": None, "BreakMatrix4": None,
+        "BreakVector2": None, "BreakVector3": None, "BreakVector4": None, "BuildString": None,
+        "BundleConstructor": BUNDLES, "BundleInspector": BUNDLES, "BundleToUSDA": BUNDLES, "CapitalizeString": None,
+        "Ceil": None, "Clamp": None, "ClearVariantSelection": VARIANTS, "Compare": None, "CompareTargets": None,
+        "ConstantBool": None, "ConstantColor3d": None, "ConstantColor3f": None, "ConstantColor3h": None,
+        "ConstantColor4d": None, "ConstantColor4f": None, "ConstantColor4h": None, "ConstantDouble": None,
+        "ConstantDouble2": None, "ConstantDouble3": None, "ConstantDouble4": None, "ConstantE": None,
+        "ConstantFloat": None, "ConstantFloat2": None, "ConstantFloat3": None, "ConstantFloat4": None,
+        "ConstantFrame": None, "ConstantHalf": None, "ConstantHalf2": None, "ConstantHalf3": None,
         "ConstantHalf4": None, "ConstantInt": None, "ConstantInt2": None, "ConstantInt3": None, "ConstantInt4": None,
-        "ConstantInt64": None, "ConstantNormal3d": None, "ConstantNormal3f": None, "ConstantPath": None,
-        "ConstantPi": None, "ConstantPoint3d": None, "ConstantPoint3f": None, "ConstantPrims": None,
-        "ConstantQuatd": None, "ConstantQuatf": None, "ConstantQuath": None, "ConstantString": None,
-        "ConstantTarget": None, "ConstantToken": None, "ConstantUInt": None, "ConstantUInt64": None,
-        "ConstantVector3d": None, "ConstantVector3f": None, "ConstructArray": None, "Cos": None,
-        "CrossProduct": None, "Distance3D": None, "Divide": None, "DotProduct": None, "ExtractAttribute": BUNDLES,
-        "FindPrims": None, "Floor": None, "GetGraphTargetId": GRAPH_TARGETS, "GetGraphTargetPrim": None,
-        "GetMatrix4Quaternion": None, "GetMatrix4Rotation": EULER, "GetMatrix4RotationMatrix": EULER,
-        "GetMatrix4Translation": None, "GetParentPath": None, "GetParentPrims": None,
-        "GetPrimLocalToWorldTransform": None, "GetPrimPath": None, "GetPrimPaths": None, "GetPrimRelationship": None,
-        "GetPrimsAtPath": None, "GetStringLength": None, "GetTargetsSize": None,
-        "GpuInteropRenderProductEntry": None, "GraphTarget": None, "HasAttribute": BUNDLES, "Increment": None,
-        "IsPrimActive": None, "IsZero": None, "JoinString": None, "Magnitude": None,
+        "ConstantInt64": None, "ConstantMatrix2d": None, "ConstantMatrix3d": None, "ConstantMatrix4d": None,
+        "ConstantNormal3d": None, "ConstantNormal3f": None, "ConstantNormal3h": None, "ConstantPath": None,
+        "ConstantPi": None, "ConstantPoint3d": None, "ConstantPoint3f": None, "ConstantPoint3h": None,
+        "ConstantPrims": None, "ConstantQuatd": None, "ConstantQuatf": None, "ConstantQuath": None,
+        "ConstantString": None, "ConstantTarget": None, "ConstantTexCoord2d": None, "ConstantTexCoord2f": None,
+        "ConstantTexCoord2h": None, "ConstantTexCoord3d": None, "ConstantTexCoord3f": None,
+        "ConstantTexCoord3h": None, "ConstantTimecode": None, "ConstantToken": None, "ConstantUChar": None,
+        "ConstantUInt": None, "ConstantUInt64": None, "ConstantVector3d": None, "ConstantVector3f": None,
+        "ConstructArray": None, "CopyAttribute": BUNDLES, "Cos": None, "CreateTubeTopology": GEOMETRY,
+        "CrossProduct": None, "CurveToFrame": GEOMETRY, "CurveTubePositions": GEOMETRY, "CurveTubeST": GEOMETRY,
+        "Distance3D": None, "Divide": None, "DotProduct": None, "EachZero": None, "Ease": None, "EndsWith": None,
+        "ExtractAttribute": BUNDLES, "ExtractBundle": BUNDLES, "ExtractPrim": BUNDLES, "FindPrims": None,
+        "Floor": None, "GetAttributeNames": BUNDLES, "GetGraphTargetId": GRAPH_TARGETS, "GetGraphTargetPrim": None,
+        "GetLocationAtDistanceOnCurve": GEOMETRY, "GetLocationAtDistanceOnCurve2": GEOMETRY,
+        "GetMatrix4Quaternion": None, "GetMatrix4Rotation": None, "GetMatrix4RotationMatrix": None,
+        "GetMatrix4Scale": None, "GetMatrix4Translation": None, "GetParentPath": None, "GetParentPrims": None,
+        "GetPrimDirectionVector": None, "GetPrimLocalToWorldTransform": None, "GetPrimPath": None,
+        "GetPrimPaths": None, "GetPrimRelationship": None, "GetPrims": BUNDLES, "GetPrimsAtPath": None,
+        "GetString": None, "GetStringLength": None, "GetTargets": None, "GetTargetsSize": None,
+        "GetTimeline": TIMELINE, "GetVariantNames": VARIANTS, "GetVariantSelection": VARIANTS,
+        "GetVariantSetNames": VARIANTS, "GpuInteropCudaEntry": None, "GpuInteropRenderProductEntry": None,
+        "GraphTarget": None, "HasAttribute": BUNDLES, "HasVariantSet": VARIANTS, "Increment": None,
+        "InsertAttribute": BUNDLES, "InsertString": None, "InsertTargets": None, "Interpolator": None,
+        "IsPrimActive": None, "IsPrimSelected": SELECTION, "IsZero": None, "JoinString": None,
+        "LengthAlongCurve": GEOMETRY, "LoopTimeline": TIMELINE, "Magnitude": None,
         "MakeArray": "Kit's older Python array maker, replaced by ConstructArray; not carried over",
-        "MakeVector2": None, "MakeVector3": None, "MakeVector4": None, "Maximum": None, "Minimum": None,
-        "Modulo": None, "Multiply": None, "Negate": None, "Normalize": None, "ReadGamepadState": None,
-        "ReadKeyboardState": None, "ReadPrim": BUNDLES, "ReadPrimAttribute": None, "ReadPrimLocalTransform": None,
-        "ReadTime": None, "RotateVector": None, "Round": None, "SelectIf": None, "SetMatrix4Quaternion": None,
-        "Sin": None, "Subtract": None, "Tan": None, "Timer": None, "ToDouble": None, "ToFloat": None, "ToHalf": None,
-        "ToString": None, "ToTarget": None, "ToToken": None, "Trig": None, "WritePrim": BUNDLES,
-        "WritePrimAttribute": None, "WritePrimLocalTransform": None}),
+        "MakeMatrix2": None, "MakeMatrix3": None, "MakeMatrix4": None, "MakeTransform": None,
+        "MakeTransformLookAt": LOOK_AT, "MakeVector2": None, "MakeVector3": None, "MakeVector4": None,
+        "MatrixMultiply": None, "Maximum": None, "Minimum": None, "Modulo": None, "MoveToTarget": MANEUVER,
+        "MoveToTransform": MANEUVER, "Multiply": None, "Negate": None, "Noise": NOISE, "Normalize": None,
+        "NthRoot": NTH_ROOT, "RandomBoolean": None, "RandomGaussian": GAUSSIAN, "RandomUnitQuaternion": None,
+        "RandomUnitVector": None, "ReadGamepadState": None, "ReadKeyboardState": None,
+        "ReadOmniGraphValue": GRAPH_VALUES, "ReadPrim": BUNDLES, "ReadPrimAttribute": None,
+        "ReadPrimAttributes": BUNDLES, "ReadPrimBundle": BUNDLES, "ReadPrimLocalTransform": None,
+        "ReadPrimMaterial": MATERIALS, "ReadPrimRelationship": None, "ReadPrims": BUNDLES, "ReadPrimsBundle": BUNDLES,
+        "ReadPrimsV2": BUNDLES, "ReadSetting": SETTINGS, "ReadTime": None, "RemoveAttribute": BUNDLES,
+        "RenameAttribute": BUNDLES, "ReplaceString": None, "ReplaceTargetName": None, "ReplaceTargets": None,
+        "RotateToOrientation": MANEUVER, "RotateToTarget": MANEUVER, "RotateVector": None, "Round": None,
+        "RpResourceExampleHydra": None, "ScaleToSize": MANEUVER, "SelectIf": None, "SelectTargetIf": None,
+        "SetMatrix4Quaternion": None, "SetMatrix4Rotation": None, "SetMatrix4Scale": None,
+        "SetMatrix4Translation": None, "SetTarget": None, "SetTimeline": TIMELINE, "SetVariantSelection": VARIANTS,
+        "Sin": None, "SourceIndices": GEOMETRY, "StartsWith": None, "StartTimeline": TIMELINE,
+        "StopTimeline": TIMELINE, "Subtract": None, "Tan": None, "Timer": None, "ToBool": None, "ToDeg": None,
+        "ToDouble": None, "ToFloat": None, "ToHalf": None, "ToInt": None, "ToInt64": None, "ToRad": None,
+        "ToString": None, "ToTarget": None, "ToToken": None, "ToUchar": None, "ToUint": None, "ToUint64": None,
+        "TransformVector": None, "TranslateToLocation": MANEUVER, "TranslateToTarget": MANEUVER, "Transpose": None,
+        "Trig": None, "WritePrim": BUNDLES, "WritePrimAttribute": None, "WritePrimLocalTransform": None,
+        "WritePrimMaterial": MATERIALS, "WritePrimRelationship": PRIM_EDIT, "WritePrims": BUNDLES,
+        "WritePrimsV2": BUNDLES, "WriteSetting": SETTINGS}),
     "isaacsim.core.nodes": _ids(_ISAAC_CORE, {
         "IsaacArticulationController": None, "IsaacArticulationState": None,
         "IsaacAttachHydraTexture": None, "IsaacComputeOdometry": None, "IsaacComputeTransformTree": None,
@@ -90,7 +140,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "IsaacGetViewportRenderProduct": None, "IsaacJointNameResolver": None,
         "IsaacPassthroughImagePtr": None, "IsaacReadCameraInfo": None, "IsaacReadEnvVar": HOST,
         "IsaacReadFilePath": HOST, "IsaacReadSimulationTime": None, "IsaacReadSimulationTimeAnnotator": None,
-        "IsaacReadSystemTime": HOST, "IsaacReadSystemTimeAnnotator": None, "IsaacReadWorldPose": None,
+        "IsaacReadSystemTime": None, "IsaacReadSystemTimeAnnotator": None, "IsaacReadTimes": None, "IsaacReadWorldPose": None,
         "IsaacRealTimeFactor": HOST, "IsaacSetCameraOnRenderProduct": None, "IsaacSetViewportResolution": None,
         "IsaacSimulationGate": None, "IsaacTestNode": TEST_ONLY, "IsaacTimeSplitter": None,
         "OgnIsaacRunOneSimulationFrame": None, "OgnIsaacScaleToFromStageUnit": None, "OnPhysicsStep": None}),
@@ -121,10 +171,9 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
 # what a table does not show
 LIBRARY_NOTES = {
     "omni.graph.nodes": (
-        "The types whose id and ports Kit's node library reference pages confirmed, not yet the whole "
-        "extension (about 250 types: colour, half, texture-coordinate and matrix constants, bundles, strings, "
-        "curves, random numbers, variants...): a graph using one of the others is refused on import with a "
-        "line naming it (--skip-unknown drops the node)."),
+        "Every type of Kit's omni.graph.nodes extension (and its omni.graph.nodes_core split) that Kit's node "
+        "library reference lists; a graph using a type not listed here is refused on import with a line naming "
+        "it (--skip-unknown drops the node)."),
 }
 IMPLEMENTED, DROPPED, MISSING = "implemented", "dropped on import", "not implemented"
 

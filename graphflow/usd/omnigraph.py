@@ -180,9 +180,9 @@ def _import_one(stage, graph_prim, label: str, registry: Registry, skip_unknown:
             command, link = legacy_gripper_command_node(name, f"{label}: node '{name}'", warnings)
             nodes.append(command)
             extra_connections.append(link)
-        for attribute in node_type.spec.inputs:
-            if attribute.attr_type.base == "target":
-                for target in inputs.get(attribute.name, ()):
+        for attribute, paths in _prim_inputs(node_type.spec, inputs):
+            if paths:
+                for target in paths:
                     if INSTANCE_TOKEN in target:
                         continue      # bound to each instance's target prim later (bind_target)
                     missing = missing_target(stage, target)
@@ -346,6 +346,21 @@ def _missing_port(kept: dict, endpoint: str | None) -> str | None:
     return f"graphflow's {node_type.spec.id} has no port '{port}'"
 
 
+def _prim_inputs(spec, inputs: dict):
+    """(attribute, prim paths) of each input naming prims: targets, and the path tokens (robotPath, primPath...)
+    a node reads when its usePath is on (or it has none)."""
+    use_path = inputs.get("usePath", spec.attribute("inputs:usePath").default
+                          if spec.attribute("inputs:usePath") else True)
+    for attribute in spec.inputs:
+        value = inputs.get(attribute.name)
+        if attribute.attr_type.base == "target":
+            yield attribute, tuple(value or ())
+        elif (attribute.attr_type.base in ("token", "string", "path") and not attribute.attr_type.is_array
+              and attribute.name.endswith("Path") and use_path and isinstance(value, str)
+              and value.startswith("/") and "." not in value.rsplit("/", 1)[-1]):
+            yield attribute, (value,)
+
+
 def _value(attribute):
     """An attribute's composed value as plain JSON-ready Python (None when unset)."""
     if not attribute or not attribute.HasAuthoredValue():
@@ -360,6 +375,10 @@ def _plain(value):
         return value.pathString
     if hasattr(value, "imaginary") and hasattr(value, "real"):  # Gf.Quat*: graphflow stores x, y, z, w
         return [*(float(c) for c in value.imaginary), float(value.real)]
+    if type(value).__name__ == "TimeCode":  # Sdf.TimeCode: its number of time codes
+        return float(value.GetValue())
+    if hasattr(value, "GetRow"):  # Gf.Matrix*: graphflow stores matrices flat, row by row
+        return [float(c) for row in value for c in row]
     try:
         return [_plain(item) for item in value]
     except TypeError:

@@ -135,3 +135,18 @@ def test_array_find_value_gives_the_first_index_or_minus_one():
     assert find([4, 7, 7], 7) == 1
     assert find([[0.0, 1.0], [1.0, 0.0]], [1.0, 0.0]) == 1
     assert find([1, 2], 3) == -1
+
+
+def test_construct_array_reads_elements_kit_saved_as_text_while_unresolved():
+    """Kit saves an unresolved 'any' input as token text (Isaac's Basic Robot tutorial: input0 = "-0.9")."""
+    from graphflow.testing import NodeHarness
+
+    made = NodeHarness("omni.graph.nodes.ConstructArray", {"arraySize": 3, "arrayType": "double[]", "input0": "-0.9",
+                                                           "input1": 1.8}).compute().outputs["array"]
+    assert made == (-0.9, 1.8, 0.0)
+    rows = NodeHarness("omni.graph.nodes.ConstructArray", {"arraySize": 1, "arrayType": "double[3][]",
+                                                           "input0": "(1, 2, 3)"}).compute().outputs["array"]
+    assert rows == ((1.0, 2.0, 3.0),)
+    tokens = NodeHarness("omni.graph.nodes.ConstructArray", {"arraySize": 1, "arrayType": "token[]",
+                                                             "input0": "1.5"}).compute().outputs["array"]
+    assert tokens == ("1.5",)

@@ -83,3 +83,27 @@ def test_an_invalid_graph_never_replaces_a_valid_file_without_an_explicit_choice
     assert status == 200 and validate(studio_folder / "counter.draft.json").returncode == 2
     status, replaced = studio.request("POST", "/api/save", {**request, "replaceValid": True})
     assert status == 200 and replaced["status"] == "saved" and "nowhere" in path.read_text()
+
+
+def test_the_watched_revision_changes_with_the_graph_and_with_a_layer_its_stage_composes(studio, studio_folder):
+    """The page's watch polls this; the files are graphflow.watching's, as for `graphflow run --watch`."""
+    (studio_folder / "base.usda").write_text('#usda 1.0\n\ndef Xform "World"\n{\n}\n')
+    (studio_folder / "scene.usda").write_text('#usda 1.0\n(\n    subLayers = [@./base.usda@]\n)\n')
+    graph = studio_folder / "staged.json"
+    data = json.loads((studio_folder / "counter.json").read_text())
+    data["settings"]["stage"] = "scene.usda"
+    graph.write_text(json.dumps(data))
+
+    def seen():
+        status, body = studio.request("GET", "/api/revision?path=staged.json")
+        assert status == 200
+        return body
+
+    first = seen()
+    assert first == seen() and first["stage"] is not None
+    (studio_folder / "base.usda").write_text('#usda 1.0\n\ndef Xform "World"\n{\n}\n\ndef Xform "More"\n{\n}\n')
+    second = seen()
+    assert second["revision"] == first["revision"] and second["stage"] != first["stage"]
+    graph.write_text(json.dumps(data, indent=1))
+    third = seen()
+    assert third["revision"] != second["revision"] and third["stage"] == second["stage"]

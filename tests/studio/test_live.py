@@ -109,3 +109,36 @@ def test_the_live_stream_refuses_a_missing_token_and_a_foreign_origin(gantry):
         with pytest.raises(InvalidStatus) as refused:
             connect(gantry, **options)
         assert refused.value.response.status_code == 403
+
+
+@pytest.fixture
+def pick_place(tmp_path):
+    shutil.copy(GRAPHS / "ur10_pick_place.json", tmp_path / "pick.json")
+    server = Studio(tmp_path.resolve(), "pick.json")
+    yield server
+    server.stop()
+
+
+def test_a_live_run_saves_the_trace_and_verdict_graphflow_run_gives(pick_place):
+    """Determinism: what the studio saves of a live run (made again from its input) is `graphflow run`'s trace, byte for byte."""
+    from graphflow.verdicts.checked_run import run_checked
+
+    path = pick_place.folder / "pick.json"
+    with websockets_sync.connect(f"ws://127.0.0.1:{pick_place.port}/api/live?path=pick.json&token={pick_place.token}",
+                                 open_timeout=30) as socket:
+        until(socket, "start")
+        step(socket, 7)
+        socket.send(json.dumps({"command": "saveTrace", "path": "first7.jsonl"}))
+        until(socket, "saved")
+        socket.send(json.dumps({"command": "speed", "value": None}))
+        socket.send(json.dumps({"command": "play"}))
+        ended = until(socket, "frame", lambda message: message["ended"] is not None)["ended"]
+        socket.send(json.dumps({"command": "saveTrace", "path": "live.jsonl"}))
+        until(socket, "saved")
+    verdict = run_checked(path, trace=pick_place.folder / "run.jsonl")
+    headless = (pick_place.folder / "run.jsonl").read_text()
+    assert (pick_place.folder / "live.jsonl").read_text() == headless
+    assert (ended["passed"], ended["failures"]) == (verdict.run_passed, verdict.failures)
+    assert ended["checks"] == verdict.checks == 6
+    lines = headless.splitlines(keepends=True)
+    assert (pick_place.folder / "first7.jsonl").read_text() == "".join(lines[:8])   # the header and ticks 1-7

@@ -56,6 +56,8 @@ STAGE_INPUTS = {
     "omni.graph.nodes.IsPrimActive": {"primTarget": CUBE},
     "omni.graph.action.OnObjectChange": {"prim": CUBE, "name": "physics:mass"},
     "isaacsim.core.nodes.IsaacJointNameResolver": {"robotPath": UR10, "jointNames": ["elbow_joint"]},
+    "omni.graph.nodes.GetPrimDirectionVector": {"prim": CUBE, "usePath": False},
+    "omni.graph.nodes.ReadPrimRelationship": {"prim": UR10 + "/root_joint", "name": "physics:body1"},
 }
 
 # types whose prim the packaged stage lacks: on it they must refuse clearly, naming the prim
@@ -64,7 +66,10 @@ OWN_PRIM = {"isaacsim.sensors.physics.IsaacReadRaycastSensor": ({"raycastSensorP
 TYPES = default_registry().types()
 # constants holding paths and path conversions pass them on without reading the scene
 PATHS_ONLY = ("omni.graph.nodes.GetPrimPaths", "omni.graph.action.ForEachTarget", "omni.graph.nodes.GetTargetsSize",
-              "omni.graph.nodes.GetParentPrims", "omni.graph.nodes.GetPrimPath")
+              "omni.graph.nodes.GetParentPrims", "omni.graph.nodes.GetPrimPath", "omni.graph.nodes.AppendTargetPaths",
+              "omni.graph.nodes.AppendTargets", "omni.graph.nodes.CompareTargets", "omni.graph.nodes.GetTargets",
+              "omni.graph.nodes.InsertTargets", "omni.graph.nodes.ReplaceTargetName", "omni.graph.nodes.ReplaceTargets",
+              "omni.graph.nodes.SelectTargetIf", "omni.graph.nodes.SetTarget")
 STAGE_TYPES = [t for t in TYPES if any(a.type in ("target", "path") for a in t.spec.inputs)
                and "constants" not in t.spec.categories and t.spec.id not in PATHS_ONLY]
 

@@ -95,6 +95,21 @@ def test_run_goes_on_until_the_first_compute_that_needs_the_missing_prim(tmp_pat
     assert "(10 ticks," in err
 
 
+def test_a_robot_path_token_under_a_missing_layer_degrades_like_a_target(tmp_path, capsys):
+    """Isaac's path inputs (robotPath, primPath with usePath) name prims as targets do (Isaac's Basic Robot tutorial)."""
+    text = MISSING_ROBOT.replace("custom rel inputs:targetPrim = </Robot/base_link>",
+                                 'custom token inputs:robotPath = "/Robot"')
+    code, graph, err = _import(tmp_path, text, capsys)
+    assert code == 0, err
+    line = ("node 'controller' input 'inputs:robotPath': prim /Robot has no definition: it comes from "
+            "https://example.invalid/robots/arm.usd (referenced at /Robot), which cannot be opened")
+    assert f"warning: {tmp_path / 'scene.usda'}: {line}" in err.splitlines()
+    assert main(["run", str(graph), "--ticks", "9"]) == 0
+    capsys.readouterr()
+    assert main(["run", str(graph), "--ticks", "30"]) == 1
+    assert f"run-time failure: {line}" in capsys.readouterr().err
+
+
 VERSIONS = '''#usda 1.0
 def OmniGraph "Graph"
 {

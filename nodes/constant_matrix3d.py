@@ -1,0 +1,21 @@
+"""omni.graph.nodes.ConstantMatrix3d: a 3x3 double matrix constant."""
+from graphflow.spec import Attribute, NodeSpec
+
+SPEC = NodeSpec(
+    id="omni.graph.nodes.ConstantMatrix3d",
+    version=1,
+    description=(
+        "Holds a 3x3 double matrix constant (9 values row by row; identity by default) set on inputs:value and outputs it on outputs:value. "
+        "(In OmniGraph files the constant is read from inputs:value itself.)"),
+    categories=("constants",),
+    inputs=(
+        Attribute("value", "matrixd[9]", default=(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0), description="The constant value"),
+    ),
+    outputs=(
+        Attribute("value", "matrixd[9]", description="The constant value"),
+    ),
+)
+
+
+def compute(db):
+    db.outputs.value = db.inputs.value

@@ -1,0 +1,21 @@
+"""omni.graph.nodes.ConstantTexCoord2h: a texcoordh[2] constant."""
+from graphflow.spec import Attribute, NodeSpec
+
+SPEC = NodeSpec(
+    id="omni.graph.nodes.ConstantTexCoord2h",
+    version=1,
+    description=(
+        "Holds a texcoordh[2] constant (a UV texture coordinate) set on inputs:value and outputs it on outputs:value. "
+        "(In OmniGraph files the constant is read from inputs:value itself.)"),
+    categories=("constants",),
+    inputs=(
+        Attribute("value", "texcoordh[2]", default=(0.0, 0.0), description="The constant value"),
+    ),
+    outputs=(
+        Attribute("value", "texcoordh[2]", description="The constant value"),
+    ),
+)
+
+
+def compute(db):
+    db.outputs.value = db.inputs.value
