@@ -38,17 +38,18 @@ class TraceRecorder:
     ``TraceRecorder(simulation, stream)`` writes the header and adds itself to the simulation's
     listeners: it collects exec pulses as nodes compute (``on_compute``) and captures each tick after
     it ran (``on_tick``). The stream stays open: whoever opened it closes it. *records*, a list, also
-    keeps every record as a dict (the run report reads them so, without encoding JSON); without a
-    stream the ticks are encoded into it only when ``flush()`` asks.
+    keeps every record as a dict (the run report reads them so, without encoding JSON). *deferred*
+    (only without a stream): ticks are encoded into *records* only when ``flush()`` asks.
     """
 
     def __init__(self, simulation, stream: IO[str] | None, *, graph: str | None = None, records: list | None = None,
-                 randomized: Sequence[dict] = ()):
+                 randomized: Sequence[dict] = (), deferred: bool = False):
         from graphflow.observe.trace_scene import SceneSection
 
         self.simulation = simulation
         self.stream = stream
         self.records = records
+        self.deferred = deferred and stream is None
         self.instance = simulation.instance
         self._pulses: list[str] = []
         self._pulse_names: dict[tuple, str] = {}   # (node, exec output, state) -> its pulse text
@@ -87,7 +88,7 @@ class TraceRecorder:
     def on_tick(self, simulation, tick: int) -> None:
         """Capture the tick that just ran; write its record now when there is a stream."""
         self._capture()
-        if self.stream is not None:
+        if not self.deferred:
             self.flush()
 
     def flush(self) -> None:

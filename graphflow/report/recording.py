@@ -19,7 +19,8 @@ class ReportRecording:
     def __init__(self, simulation, graph: str, *, also_to=None, timings: bool = False, randomized=()):
         self._records: list[dict] = []
         self.simulation = simulation
-        self._recorder = TraceRecorder(simulation, also_to, graph=graph, records=self._records, randomized=randomized)
+        self._recorder = TraceRecorder(simulation, also_to, graph=graph, records=self._records, randomized=randomized,
+                                      deferred=True)
         self.timer = ComputeTimer(simulation) if timings else None
 
     @property
