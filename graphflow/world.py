@@ -206,6 +206,8 @@ class World(Protocol):
 
     # poses and velocities
     def prim_pose(self, path: str) -> Pose: ...
+    def body_poses(self, paths: Sequence[str]) -> list[Pose]:
+        """``prim_pose`` of each rigid-body prim, in one query (a recorder samples many bodies every few ticks)."""
     def prim_velocity(self, path: str) -> tuple[Vec3, Vec3]:
         """(linear m/s, angular rad/s) of the prim's origin, world frame."""
 
@@ -299,7 +301,7 @@ class ClockWorld:
     def _no_physics(self, *_args, **_kwargs):
         raise WorldError("this graph names no stage, so there are no prims to read or write")
 
-    prim_pose = prim_velocity = joint_names = joint_positions = joint_velocities = _no_physics
+    prim_pose = body_poses = prim_velocity = joint_names = joint_positions = joint_velocities = _no_physics
     joint_paths = joint_efforts = joint_dof_types = _no_physics
     set_joint_targets = get_attribute = set_attribute = gravity = _no_physics
     raycast = raycast_batch = contacts = body_of = same_body = _no_physics

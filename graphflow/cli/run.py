@@ -154,7 +154,7 @@ def run_once(args) -> int:
         trace_stream = _open_trace(args.trace, outputs, args.force) if args.trace else None
         report = _start_report(args, simulation, trace_stream, variant.drawn)
         if trace_stream is not None and report is None:
-            from graphflow.observe.trace import TraceRecorder
+            from graphflow.observe.recorder import TraceRecorder
 
             TraceRecorder(simulation, trace_stream, graph=args.graph, randomized=variant.drawn)
         if args.record:

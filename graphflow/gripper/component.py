@@ -115,6 +115,9 @@ class SurfaceGripperComponent:
         # joint path -> (reach, nearest hit (prim, m) or None) of its first empty ray since the close began,
         # or None when it saw only the gripper's own body: where the arm was when the close was commanded
         self.misses: dict[str, tuple | str | None] = {}
+        # (physics step index, handle -> rigid-row force) as check_force_limits read them on that step:
+        # checked_force answers from it until the next step instead of asking the world again
+        self._step_forces: tuple[int, dict] = (-1, {})
 
     # -- commands (setGripperStatus) --
 
@@ -240,6 +243,8 @@ class SurfaceGripperComponent:
         shear_limit = self.properties.shear_force_limit
         coaxial_limit = self.properties.coaxial_force_limit
         force_limit, torque_limit = self.properties.force_limit, self.properties.torque_limit
+        step_forces: dict = {}
+        self._step_forces = (self.world.step_index, step_forces)
         if self.status == GripperStatus.OPEN or max(shear_limit, coaxial_limit, force_limit, torque_limit) <= 0:
             return
         for index in sorted(self.active):
@@ -251,7 +256,7 @@ class SurfaceGripperComponent:
             if handle is None:
                 continue
             attachments = self._attachments
-            force = attachments.force_on_gripper(handle)
+            force = step_forces[handle] = attachments.force_on_gripper(handle)
             frame = attachments.frame(point.body0_path, point.local_pose0)
             if frame is None:
                 continue
@@ -287,8 +292,12 @@ class SurfaceGripperComponent:
     def checked_force(self, handle) -> float:
         """|F| on the gripper as its limits see it (N): the whole force for a legacy ``forceLimit`` (the springs'
         share included: the legacy joint breaks on it), else the rigid rows' (what the coaxial and shear
-        limits split)."""
-        return _norm(self._attachments.force_on_gripper(handle, self.properties.force_limit <= 0))
+        limits split); read once a physics step (the trace samples it every tick while the check ran already)."""
+        rigid_rows_only = self.properties.force_limit <= 0
+        step, forces = self._step_forces
+        if rigid_rows_only and handle in forces and step == self.world.step_index:
+            return _norm(forces[handle])
+        return _norm(self._attachments.force_on_gripper(handle, rigid_rows_only))
 
     def gripped_objects(self) -> list[str]:
         """Objects held by executed attachments, each once, sorted (Isaac returns an unordered set)."""
@@ -304,6 +313,7 @@ class SurfaceGripperComponent:
         """Forget every attachment (Isaac's onStop), without queuing detaches: the world is being reset."""
         self.active.clear()
         self.handles.clear()
+        self._step_forces = (-1, {})
         self.inactive = set(range(len(self.points)))
         self.status = GripperStatus.OPEN
         self.retry_active = False

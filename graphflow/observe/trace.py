@@ -2,7 +2,8 @@
 
 A trace is written while a graph runs (``graphflow run GRAPH --trace FILE``) so a
 run can be read, plotted (``graphflow plot``) and compared with another
-(``graphflow trace diff``) afterwards. Every tick record holds only what changed
+(``graphflow trace diff``) afterwards; ``graphflow.observe.recorder`` writes it, this
+module samples what it holds, reads it back and compares. Every tick record holds only what changed
 on that tick, so the file stays small and two runs differ exactly where their
 behaviour does. Nothing depends on the wall clock and floats are written by
 ``repr``: the same run gives a byte-identical file.
@@ -16,20 +17,15 @@ import sys
 from dataclasses import dataclass
 from importlib import metadata
 from pathlib import Path
-from typing import IO, Any, Iterator, Sequence
+from typing import Any, Iterator, NamedTuple
 
 from graphflow import __version__
 from graphflow.errors import BadInput
-from graphflow.types import ExecState
 
 TRACE_FORMAT = "graphflow-trace"
 TRACE_VERSION = 2            # 2 added the scene section (graphflow.observe.trace_scene); 1 is still read
 READABLE_VERSIONS = (1, 2)
 PHASE_OUTPUT = "eventName"   # an output with this name carries a controller's phase (PickPlaceController)
-
-_STATE_SUFFIX = {ExecState.ENABLED: "", ExecState.ENABLED_AND_PUSH: ":push",
-                 ExecState.LATENT_PUSH: ":latentPush", ExecState.LATENT_FINISH: ":latentFinish"}
-
 
 class TraceError(BadInput):
     """A trace file that cannot be read (missing, not JSON Lines, no header)."""
@@ -80,16 +76,10 @@ def surface_gripper_manager(world):
     return world.services.get(SurfaceGripperManager)
 
 
-def published_topics(world) -> list[dict]:
-    """ROS 2 messages published during the tick (``topic``, ``type``, ``message``), when the run has a topic bus."""
-    from graphflow.ros2.bus import published_this_tick
+class GripperSample(NamedTuple):
+    """One gripper as seen after a tick: status, gripped objects, holding force, held height, reason.
 
-    return published_this_tick(world)
-
-
-@dataclass(frozen=True)
-class GripperSample:
-    """One gripper as seen after a tick: status, gripped objects, holding force, held height, reason."""
+    A tuple, so a recorder can keep its fields flat, in this order (``TraceRecorder._capture``)."""
 
     status: str
     gripped: tuple[str, ...]
@@ -102,21 +92,24 @@ class GripperSample:
                 "reason": self.reason}
 
 
-def sample_grippers(world) -> dict[str, GripperSample]:
-    """Every surface gripper of the world: status, gripped objects, constraint force (N), held object's z (m)."""
-    manager = surface_gripper_manager(world)
+def sample_grippers(world, manager=None) -> dict[str, GripperSample]:
+    """Every surface gripper of the world: status, gripped objects, constraint force (N), held object's z (m).
+
+    *manager*: the world's gripper manager, when the caller has looked it up already."""
+    if manager is None:
+        manager = surface_gripper_manager(world)
     if manager is None:
         return {}
     samples = {}
     for path in sorted(getattr(manager, "components", {})):
-        gripped = tuple(manager.get_gripped_objects(path))
-        status = manager.get_gripper_status(path)
+        component = manager.component(path)
+        gripped = tuple(component.gripped_objects())
         samples[path] = GripperSample(
-            status=getattr(status, "token", str(status)),
+            status=component.status.token,
             gripped=gripped,
-            force=_holding_force(manager, path) if gripped else None,
+            force=_holding_force(component) if gripped else None,
             held_z=float(world.prim_pose(gripped[0])[0][2]) if gripped else None,
-            reason=manager.component(path).reason)
+            reason=component.reason)
     return samples
 
 
@@ -163,183 +156,10 @@ def _next_free(stage, path: str, taken: set[str]) -> str:
     return candidate
 
 
-def _holding_force(manager, path: str) -> float | None:
+def _holding_force(component) -> float | None:
     """The largest force an attachment of this gripper carries, as its break limits see it (N)."""
-    component = manager.component(path)
     magnitudes = [float(component.checked_force(handle)) for handle in component.handles.values()]
     return max(magnitudes) if magnitudes else None
-
-
-class TraceRecorder:
-    """Writes the trace of a simulation's first graph instance to a text stream: a header, then a line per tick.
-
-    ``TraceRecorder(simulation, stream)`` writes the header and adds itself to the simulation's
-    listeners: it collects exec pulses as nodes compute (``on_compute``) and writes each tick after
-    it ran (``on_tick``). The stream stays open: whoever opened it closes it. *records*, a list, also
-    keeps every record as a dict (the run report reads them so, without encoding JSON every tick);
-    the stream may then be None.
-    """
-
-    def __init__(self, simulation, stream: IO[str] | None, *, graph: str | None = None, records: list | None = None,
-                 randomized: Sequence[dict] = ()):
-        self.simulation = simulation
-        self.stream = stream
-        self.records = records
-        self.instance = simulation.instance
-        self._pulses: list[str] = []
-        self._outputs: dict[str, Any] = {}
-        self._grippers: dict[str, dict] = {}
-        nodes = self.instance.compiled.nodes
-        self._exec_names = [frozenset(a.name for a in node.spec.exec_outputs) for node in nodes]
-        self._databases = [self.instance.database(node.name) for node in nodes]
-        self._slots: list | None = None
-        self._raw: list[Any] = []         # each output's value as last seen, to skip converting unchanged ones
-        self._outputs = self._output_values()
-        from graphflow.observe.trace_scene import SceneSection
-
-        self._scene = SceneSection(simulation)
-        description = getattr(simulation.world, "description", None)
-        self._used_grippers = used_grippers(simulation)
-        self._unused = {g.path for g in getattr(description, "surface_grippers", ())} - set(self._used_grippers)
-        self._write_header(graph, list(randomized))
-        simulation.add_listener(self)
-
-    def on_compute(self, instance, node_name: str, fired: list[str], db) -> None:
-        if instance is not self.instance:
-            return
-        outputs = db.outputs.__dict__
-        self._pulses.extend(f"{node_name}.{name}{_STATE_SUFFIX[ExecState(outputs[name])]}" for name in fired)
-
-    def on_tick(self, simulation, tick: int) -> None:
-        """Write the tick that just ran: pulses, changed outputs, changed gripper fields, log lines."""
-        instance = self.instance
-        record: dict[str, Any] = {"tick": instance.tick_count, "t": self.simulation.world.time}
-        if self._pulses:
-            record["pulses"] = self._pulses
-            self._pulses = []
-        changed = self._changed_outputs()
-        if changed:
-            record["outputs"] = changed
-        grippers = {}
-        for path, sample in sample_grippers(self.simulation.world).items():
-            if path in self._unused:
-                continue    # a stage gripper the graph does not use
-            fields = sample.fields()
-            previous = self._grippers.get(path, {})
-            delta = {key: value for key, value in fields.items() if _changed(previous.get(key, _MISSING), value)}
-            if delta:
-                grippers[path] = delta
-            self._grippers[path] = fields
-        if grippers:
-            record["grippers"] = grippers
-        topics = published_topics(self.simulation.world)
-        if topics:
-            record["topics"] = topics
-        logs = []
-        for event in reversed(instance.events):   # this tick's lines are the newest
-            if event.tick != instance.tick_count:
-                break
-            logs.append({"node": event.node, "level": event.level, "message": event.message})
-        if logs:
-            record["log"] = logs[::-1]
-        record.update(self._scene.record(surface_gripper_manager(self.simulation.world)))
-        self._emit(record)
-
-    def _emit(self, record: dict) -> None:
-        if self.records is not None:
-            self.records.append(record)
-        if self.stream is not None:
-            self.stream.write(dumps_record(record) + "\n")
-
-    def _output_values(self) -> dict[str, Any]:
-        if self._slots is None:   # (outputs dict, name, "node.name") of every data output, found once
-            self._slots = [(database.outputs.__dict__, name, f"{node.name}.{name}")
-                           for node, database, exec_names in zip(self.instance.compiled.nodes, self._databases,
-                                                                 self._exec_names)
-                           for name in database.outputs.__dict__ if name not in exec_names]
-            self._raw = [_MISSING] * len(self._slots)
-        return {key: to_json_value(outputs[name]) for outputs, name, key in self._slots}
-
-    def _changed_outputs(self) -> dict[str, Any]:
-        """Outputs whose written value changed; an immutable value equal to the last one is skipped unconverted."""
-        changed, written, last_raw = {}, self._outputs, self._raw
-        for index, (outputs, name, key) in enumerate(self._slots):
-            raw = outputs[name]
-            previous = last_raw[index]
-            kind = type(raw)
-            if kind is type(previous) and _unchanged(kind, previous, raw):
-                continue
-            last_raw[index] = raw
-            if kind in _SCALARS:   # the common case, converted and compared without the general walk
-                value = raw
-                old = written.get(key, _MISSING)
-                if old is _MISSING or (old != value and not (value != value and old != old)):   # NaN stays NaN
-                    changed[key] = written[key] = value
-                continue
-            value = to_json_value(raw)
-            if _changed(written.get(key, _MISSING), value):
-                changed[key] = written[key] = value
-        return changed
-
-    def _write_header(self, graph: str | None, randomized: list[dict]) -> None:
-        document = self.simulation.document
-        world = self.simulation.world
-        compiled = self.instance.compiled
-        header = {
-            "format": TRACE_FORMAT,
-            "version": TRACE_VERSION,
-            "graph": same_path_text(graph if graph is not None else document.source),
-            "description": document.description,
-            "stage": document.settings.get("stage"),
-            "timeStep": world.time_step,
-            "nodes": {node.name: node.spec.id for node in compiled.nodes},
-            "outputs": dict(self._outputs),   # a copy: the recorder updates its own as outputs change
-            "phases": phase_outputs(compiled),
-            "grippers": self._used_grippers,
-            "versions": loaded_versions(),
-            **self._scene.header(),
-        }
-        if randomized:   # only a randomized run has it, so other traces stay as they were
-            header["randomized"] = randomized
-        self._emit(header)
-
-
-_MISSING = object()
-_SCALARS = (float, int, str, bool, type(None))
-
-
-def _unchanged(kind: type, previous: Any, raw: Any) -> bool:
-    """The same immutable value as last tick: a scalar, or a tuple of scalars (never a list or an array a node
-    may mutate in place)."""
-    if kind in _SCALARS:
-        return previous is raw or previous == raw
-    if kind is not tuple:
-        return False
-    try:
-        if not (previous is raw or previous == raw):
-            return False
-    except ValueError:   # an array inside: its truth is ambiguous
-        return False
-    return all(type(item) in _SCALARS for item in raw)
-
-
-def _changed(previous: Any, value: Any) -> bool:
-    """Different as written to the trace (so a NaN that stays NaN is no change)."""
-    if previous is _MISSING:
-        return True
-    return previous != value and not _same_but_nan(previous, value)
-
-
-def _same_but_nan(previous: Any, value: Any) -> bool:
-    """Unequal values that are written alike: NaN where the other has NaN (plain JSON values only)."""
-    if isinstance(previous, float) and isinstance(value, float):
-        return previous != previous and value != value
-    if isinstance(previous, list) and isinstance(value, list):
-        return len(previous) == len(value) and all(a == b or _same_but_nan(a, b) for a, b in zip(previous, value))
-    if isinstance(previous, dict) and isinstance(value, dict):
-        return list(previous) == list(value) and all(
-            previous[key] == value[key] or _same_but_nan(previous[key], value[key]) for key in previous)
-    return False
 
 
 # ---------------------------------------------------------------- reading

@@ -1,6 +1,6 @@
 """The trace's scene section (format version 2): what a run report needs to redraw a run.
 
-Written by ``graphflow.trace.TraceRecorder`` beside its version-1 fields, so the
+Written by ``graphflow.observe.recorder.TraceRecorder`` beside its version-1 fields, so the
 recorder itself stays small: the header's ``scene`` (every body's shapes and
 starting pose, which bodies move, the pose sampling rate), and per tick the
 nodes that computed, the moving bodies' poses (every ``poseEvery``-th tick,
@@ -11,7 +11,8 @@ description; nothing is timed, so the section is as deterministic as the rest.
 """
 from __future__ import annotations
 
-from typing import Any
+from itertools import islice
+from typing import Any, Iterator
 
 from graphflow.poses import AXIS_VECTORS, quat_rotate
 
@@ -45,7 +46,7 @@ def _shape(shape) -> dict:
 
 
 class SceneSection:
-    """Collects the scene fields of a trace for one simulation; ``header()`` once, ``record()`` after each tick."""
+    """Collects the scene fields of a trace for one simulation; ``header()`` once, ``capture()`` after each tick."""
 
     def __init__(self, simulation, pose_every: int = POSE_EVERY):
         self.world = simulation.world
@@ -72,27 +73,39 @@ class SceneSection:
         links = sorted({path for articulation in description.articulations for path in articulation.bodies})
         return {"scene": {"upAxis": description.up_axis, "poseEvery": self.pose_every, "bodies": bodies, "links": links}}
 
-    def record(self, manager) -> dict:
-        """This tick's ``computed`` nodes, sampled ``poses`` that changed and the ``rays`` of closes that began."""
+    def capture(self, manager, flat: list) -> None:
+        """Append what ``encode`` needs of this tick to *flat*, read now: compute counts, whether poses were
+        sampled and each sampled pose's seven numbers, the rays of closes that began (or None)."""
+        flat += self.instance.compute_counts
+        if self.moving and self.instance.tick_count % self.pose_every == 0:
+            flat.append(True)
+            for position, orientation in self.world.body_poses(self.moving):
+                flat += position
+                flat += orientation
+        else:
+            flat.append(False)
+        flat.append(self._rays_on_close(manager) if manager is not None else None)
+
+    def encode(self, items: Iterator) -> dict:
+        """A tick's ``computed`` nodes, sampled ``poses`` that changed and ``rays``, read from its capture by *items*."""
         record: dict[str, Any] = {}
-        counts = self.instance.compute_counts
+        counts = list(islice(items, len(self._counts)))
         computed = [node.name for node, before, now in zip(self.instance.compiled.nodes, self._counts, counts)
                     if now != before]
-        self._counts = list(counts)
+        self._counts = counts
         if computed:
             record["computed"] = computed
-        if self.moving and self.instance.tick_count % self.pose_every == 0:
+        if next(items):
             poses = {}
             for path in self.moving:
-                pose = _pose_list(self.world.prim_pose(path))
+                pose = list(map(float, islice(items, 7)))
                 if pose != self._poses.get(path):
                     poses[path] = self._poses[path] = pose
             if poses:
                 record["poses"] = poses
-        if manager is not None:
-            rays = self._rays_on_close(manager)
-            if rays:
-                record["rays"] = rays
+        rays = next(items)
+        if rays:
+            record["rays"] = rays
         return record
 
     def _rays_on_close(self, manager) -> dict:

@@ -86,6 +86,41 @@ class SceneLookups:
     def _body_pose(self, handle: BodyHandle) -> Pose:
         return compose(self._inertial_pose(handle), invert(handle.inertial_in_prim))
 
+    def body_poses(self, paths) -> list[Pose]:
+        """World poses of rigid-body prims, the same numbers as ``prim_pose`` gives one at a time.
+
+        One ``getLinkStates`` call per multibody instead of a call per link, planned once per
+        list of paths: a run report samples every moving body and link, and the per-call cost is
+        most of it.
+        """
+        key = tuple(paths)
+        plan = self._pose_plans.get(key)
+        if plan is None:
+            plan = self._pose_plans[key] = self._pose_plan(key)
+        bases, link_groups, prim_in_inertial = plan
+        inertial: list = [None] * len(key)
+        for index, body_id in bases:
+            inertial[index] = self.client.getBasePositionAndOrientation(body_id)
+        for body_id, links, indices in link_groups:
+            for index, state in zip(indices, self.client.getLinkStates(body_id, links, computeForwardKinematics=1)):
+                inertial[index] = (state[0], state[1])
+        return [compose(pose, offset) for pose, offset in zip(inertial, prim_in_inertial)]
+
+    def _pose_plan(self, paths: tuple[str, ...]):
+        """(base index and body id pairs, (body id, links, indices) per multibody, each prim frame in its inertial frame)."""
+        handles = []
+        for path in paths:
+            if path not in self.scene.bodies:
+                raise WorldError(f"{path} is not a rigid body of this stage")
+            handles.append(self.scene.bodies[path])
+        bases = [(index, handle.body_id) for index, handle in enumerate(handles) if handle.link == -1]
+        grouped: dict[int, list[int]] = {}
+        for index, handle in enumerate(handles):
+            if handle.link != -1:
+                grouped.setdefault(handle.body_id, []).append(index)
+        link_groups = [(body_id, [handles[i].link for i in indices], indices) for body_id, indices in grouped.items()]
+        return bases, link_groups, [invert(handle.inertial_in_prim) for handle in handles]
+
     def _prim_offset(self, prim_path: str) -> tuple[str | None, Pose]:
         """(nearest body ancestor or None, the prim's pose in it), from the stage's authored transforms."""
         if prim_path in self._offsets:

@@ -5,7 +5,8 @@ report TRACE`` builds the same data from a trace file instead (``from_trace``).
 """
 from __future__ import annotations
 
-from graphflow.observe.trace import Trace, TraceRecorder, to_json_value
+from graphflow.observe.recorder import TraceRecorder
+from graphflow.observe.trace import Trace, to_json_value
 from graphflow.report.build import RunInfo, run_data
 from graphflow.report.page import write_report
 from graphflow.report.timing import ComputeTimer
@@ -16,13 +17,21 @@ class ReportRecording:
     """Records a simulation's trace in memory for a report; ``write()`` after the run ends."""
 
     def __init__(self, simulation, graph: str, *, also_to=None, timings: bool = False, randomized=()):
-        self.records: list[dict] = []
+        self._records: list[dict] = []
         self.simulation = simulation
-        TraceRecorder(simulation, also_to, graph=graph, records=self.records, randomized=randomized)
+        self._recorder = TraceRecorder(simulation, also_to, graph=graph, records=self._records, randomized=randomized,
+                                      deferred=True)
         self.timer = ComputeTimer(simulation) if timings else None
 
+    @property
+    def records(self) -> list[dict]:
+        """The trace's header and tick records so far (ticks captured during the run are encoded on reading)."""
+        self._recorder.flush()
+        return self._records
+
     def trace(self) -> Trace:
-        return Trace(self.records[0], self.records[1:])
+        records = self.records
+        return Trace(records[0], records[1:])
 
     def write(self, path, document, *, evaluator=None, runtime_failure: str | None = None, seed: int | None = None,
               overrides=(), randomization: dict | None = None, force: bool = False) -> None:

@@ -205,7 +205,8 @@ class _Unlistened:
 
 def _tick_zero(simulation, graph: str):
     """The trace of tick 0 (its header: graph, scene, starting values) that the page's ``start`` message draws."""
-    from graphflow.observe.trace import Trace, TraceRecorder
+    from graphflow.observe.recorder import TraceRecorder
+    from graphflow.observe.trace import Trace
 
     records: list[dict] = []
     TraceRecorder(_Unlistened(simulation), None, graph=graph, records=records)

@@ -209,6 +209,9 @@ class FakeWorld:
             raise WorldError(f"no prim {path} in this fake world")
         return compose(self.prim_pose(carried[0]), carried[1])
 
+    def body_poses(self, paths) -> list[Pose]:
+        return [self.prim_pose(path) for path in paths]
+
     def prim_velocity(self, path: str) -> tuple[Vec3, Vec3]:
         self.prim_pose(path)
         return ZERO, ZERO

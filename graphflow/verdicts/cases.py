@@ -165,7 +165,7 @@ def run_case(case: Case, *, trace: str | Path | None = None):
         closing.callback(checked.close)
         simulation = checked.start()
         if trace is not None:
-            from graphflow.observe.trace import TraceRecorder
+            from graphflow.observe.recorder import TraceRecorder
 
             stream = closing.enter_context(open(trace, "w", encoding="utf-8", newline="\n"))
             TraceRecorder(simulation, stream, graph=case.graph)

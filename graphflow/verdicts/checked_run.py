@@ -311,7 +311,7 @@ def run_checked(path: str | Path, *, trace: str | Path | None = None, report: st
             checked.verdict.trace = str(trace)
         if report is None:
             if stream is not None:
-                from graphflow.observe.trace import TraceRecorder
+                from graphflow.observe.recorder import TraceRecorder
 
                 TraceRecorder(simulation, stream, graph=path)
             return checked.run()

@@ -318,7 +318,7 @@ class MatchesTraceCheck(_Check):
 
     def attach(self, simulation, source: str, update: bool) -> None:
         """Record this run's trace in memory from its first tick."""
-        from graphflow.observe.trace import TraceRecorder
+        from graphflow.observe.recorder import TraceRecorder
 
         self.recorded, self.update = io.StringIO(), update
         TraceRecorder(simulation, self.recorded, graph=source)

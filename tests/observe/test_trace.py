@@ -7,7 +7,8 @@ import sys
 from conftest import ROOT
 
 from graphflow.document import load_document
-from graphflow.observe.trace import TraceRecorder, read_trace
+from graphflow.observe.recorder import TraceRecorder
+from graphflow.observe.trace import read_trace
 from graphflow.runtime import Simulation
 from graphflow.testing import GraphHarness
 

@@ -4,6 +4,7 @@ A packaged gripper on the stage that no node and no check names is left out, hea
 LegacySurfaceGripper node's own gripper is in the header from the start, at the path it then authors.
 """
 import json
+import math
 
 from conftest import ROOT
 
@@ -32,3 +33,28 @@ def test_the_tuned_graph_lists_its_legacy_gripper_and_not_the_packaged_one(tmp_p
 def test_a_graph_that_names_the_packaged_gripper_still_lists_it(tmp_path, capsys):
     header, *_ticks = trace_of(tmp_path, "ur10_pick_place.json", "--ticks", "2")
     assert header["grippers"] == [PACKAGED]
+
+
+def test_the_traced_force_is_the_holds_force_read_afresh_on_every_held_tick():
+    """The sampled force reuses what the gripper's own limit check read on that physics step (a run report samples
+    every tick); it is, to the last bit, the force the world reports for the hold when asked directly."""
+    from graphflow.document import load_document
+    from graphflow.observe.trace import sample_grippers, surface_gripper_manager
+    from graphflow.runtime import Simulation
+
+    simulation = Simulation(load_document(ROOT / "graphs" / "ur10_pick_place.json"))
+    world, held = simulation.world, 0
+    try:
+        for _ in range(700):
+            simulation.step()
+            sample = sample_grippers(world).get(PACKAGED)
+            if sample is None or not sample.gripped:
+                continue
+            component = surface_gripper_manager(world).component(PACKAGED)
+            direct = [math.sqrt(sum(c * c for c in world.attachments.force_on_gripper(handle, True)))
+                      for handle in component.handles.values()]
+            assert sample.force == max(direct)
+            held += 1
+    finally:
+        simulation.close()
+    assert held > 100      # the cube is held from about tick 450 on

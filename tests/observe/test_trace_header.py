@@ -4,7 +4,7 @@ import json
 
 from conftest import ROOT
 
-from graphflow.observe.trace import TraceRecorder
+from graphflow.observe.recorder import TraceRecorder
 from graphflow.runtime import Simulation
 
 

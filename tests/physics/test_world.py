@@ -185,6 +185,20 @@ def test_prim_pose_of_a_frame_carried_by_a_body():
         assert tip[0][2] == pytest.approx(ee_position[2] - 0.1611, abs=1e-6)   # default pose: tool points down
 
 
+def test_body_poses_are_each_bodys_prim_pose_in_one_query():
+    """The batched query a recorder uses gives the very numbers of ``prim_pose``, arm links and free cube alike."""
+    with create_world(PICK_PLACE) as world:
+        world.set_joint_targets("/World/ur10", [0, 1, 2], positions=[0.4, -1.2, 0.9])
+        moving = [path for path, handle in world.scene.bodies.items() if handle.kind != "static"]
+        for _ in range(3):
+            for _ in range(20):
+                world.step()
+            assert world.body_poses(moving) == [world.prim_pose(path) for path in moving]
+            assert world.body_poses(moving[::-1]) == [world.prim_pose(path) for path in moving[::-1]]
+        with pytest.raises(WorldError, match="/World/ur10/ee_link/collision is not a rigid body"):
+            world.body_poses(["/World/ur10/ee_link/collision"])
+
+
 def test_backend_internal_lookups_round_trip():
     with create_world(PICK_PLACE) as world:
         for path in world.scene.bodies:

@@ -19,6 +19,7 @@ def value_at(changes, tick):
 
 
 def test_the_same_run_gives_a_byte_identical_report(pick_place_run, tmp_path):
+    """Also the recorder's two paths: with --trace every tick is encoded as it ends, without it at the end."""
     again = tmp_path / "again.html"
     assert graphflow("run", str(PICK_PLACE), "--report", str(again)).returncode == 0
     assert again.read_bytes() == pick_place_run["report"].read_bytes()

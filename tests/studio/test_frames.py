@@ -41,7 +41,7 @@ def test_a_socket_behind_gets_one_merged_frame_and_every_other_message_in_order(
 def test_a_frame_sampled_now_says_what_the_trace_of_the_ticks_since_the_last_one_says():
     """The sampler reads the latest state only; the trace recorded tick by tick of the same run is the reference."""
     from graphflow.document import load_document
-    from graphflow.observe.trace import TraceRecorder
+    from graphflow.observe.recorder import TraceRecorder
     from graphflow.runtime import Simulation
     from graphflow.studio.frames import FrameSampler
 

@@ -1,0 +1,259 @@
+"""Recording a run's trace (docs/trace.md): each tick is captured cheaply, then encoded as its record.
+
+Capturing appends what cannot wait (values a node may overwrite, the gripper's sample,
+sampled body poses, this tick's pulses and log lines) to one flat list of plain
+values; encoding reads it back into the records of changes. A trace written to a stream encodes
+every tick as it ends; a run report keeps its records in memory and encodes the
+captured ticks only when they are read (``flush``), so the run itself pays only for
+the capture. Both go through the same ``_encode``: the records are identical.
+"""
+from __future__ import annotations
+
+from itertools import islice
+from typing import IO, Any, Iterator, Sequence
+
+from graphflow.observe.trace import (
+    TRACE_FORMAT,
+    TRACE_VERSION,
+    GripperSample,
+    dumps_record,
+    loaded_versions,
+    phase_outputs,
+    same_path_text,
+    sample_grippers,
+    surface_gripper_manager,
+    to_json_value,
+    used_grippers,
+)
+from graphflow.ros2.bus import published_this_tick
+from graphflow.types import ExecState
+
+_STATE_SUFFIX = {ExecState.ENABLED: "", ExecState.ENABLED_AND_PUSH: ":push",
+                 ExecState.LATENT_PUSH: ":latentPush", ExecState.LATENT_FINISH: ":latentFinish"}
+
+
+class TraceRecorder:
+    """Writes the trace of a simulation's first graph instance to a text stream: a header, then a line per tick.
+
+    ``TraceRecorder(simulation, stream)`` writes the header and adds itself to the simulation's
+    listeners: it collects exec pulses as nodes compute (``on_compute``) and captures each tick after
+    it ran (``on_tick``). The stream stays open: whoever opened it closes it. *records*, a list, also
+    keeps every record as a dict (the run report reads them so, without encoding JSON). *deferred*
+    (only without a stream): ticks are encoded into *records* only when ``flush()`` asks.
+    """
+
+    def __init__(self, simulation, stream: IO[str] | None, *, graph: str | None = None, records: list | None = None,
+                 randomized: Sequence[dict] = (), deferred: bool = False):
+        from graphflow.observe.trace_scene import SceneSection
+
+        self.simulation = simulation
+        self.stream = stream
+        self.records = records
+        self.deferred = deferred and stream is None
+        self.instance = simulation.instance
+        self._pulses: list[str] = []
+        self._pulse_names: dict[tuple, str] = {}   # (node, exec output, state) -> its pulse text
+        self._captured: list = []                  # ticks captured but not yet encoded, flat (see _capture)
+        self._pending = 0                          # how many ticks _captured holds
+        self._grippers: dict[str, Any] = {}        # each gripper's sample as last encoded
+        self._manager = None                       # the world's gripper manager, once a node has made it
+        nodes = self.instance.compiled.nodes
+        databases = [self.instance.database(node.name) for node in nodes]
+        exec_names = [frozenset(a.name for a in node.spec.exec_outputs) for node in nodes]
+        slots = [(database.outputs.__dict__, name, f"{node.name}.{name}")
+                 for node, database, names in zip(nodes, databases, exec_names)
+                 for name in database.outputs.__dict__ if name not in names]
+        self._sources = [(outputs, name) for outputs, name, _key in slots]   # where each data output lives
+        self._keys = [key for _outputs, _name, key in slots]
+        self._raw: list[Any] = [_MISSING] * len(slots)   # each output as last encoded, to skip unchanged ones
+        self._outputs = {key: to_json_value(outputs[name]) for outputs, name, key in slots}
+        self._scene = SceneSection(simulation)
+        description = getattr(simulation.world, "description", None)
+        self._used_grippers = used_grippers(simulation)
+        self._unused = {g.path for g in getattr(description, "surface_grippers", ())} - set(self._used_grippers)
+        self._write_header(graph, list(randomized))
+        simulation.add_listener(self)
+
+    def on_compute(self, instance, node_name: str, fired: list[str], db) -> None:
+        if instance is not self.instance or not fired:
+            return
+        outputs, names = db.outputs.__dict__, self._pulse_names
+        for name in fired:
+            key = (node_name, name, outputs[name])
+            text = names.get(key)
+            if text is None:
+                text = names[key] = f"{node_name}.{name}{_STATE_SUFFIX[ExecState(outputs[name])]}"
+            self._pulses.append(text)
+
+    def on_tick(self, simulation, tick: int) -> None:
+        """Capture the tick that just ran; write its record now when there is a stream."""
+        self._capture()
+        if not self.deferred:
+            self.flush()
+
+    def flush(self) -> None:
+        """Encode the ticks captured since the last flush into ``records`` (and the stream)."""
+        captured, self._captured = self._captured, []
+        items = iter(captured)
+        for _tick in range(self._pending):
+            self._emit(self._encode(items))
+        self._pending = 0
+
+    def _capture(self) -> None:
+        """Append what the tick's record is made of to ``_captured``, read now (later ticks overwrite it).
+
+        One flat list of plain values (the order ``_encode`` reads them in), not objects per tick: the
+        garbage collector does not track floats and strings, so a long run's captures do not make its
+        collections more frequent or slower."""
+        instance, world, flat = self.instance, self.simulation.world, self._captured
+        flat += (instance.tick_count, world.time, len(self._pulses))
+        flat += self._pulses
+        self._pulses.clear()
+        values = [outputs[name] for outputs, name in self._sources]
+        for index, value in enumerate(values):
+            kind = type(value)
+            if kind not in _SCALARS and not (kind is tuple and _scalar_items(value)):
+                values[index] = to_json_value(value)   # a list or array a node may change in place: a copy
+        flat += values
+        events = instance.events
+        if events and events[-1].tick == instance.tick_count:
+            lines = []
+            for event in reversed(events):   # this tick's lines are the newest
+                if event.tick != instance.tick_count:
+                    break
+                lines.append((event.node, event.level, event.message))
+            flat.append(lines[::-1])
+        else:
+            flat.append(None)
+        flat.append(published_this_tick(world) or None)   # ROS 2 messages published during the tick
+        manager = self._manager
+        if manager is None:
+            manager = self._manager = surface_gripper_manager(world)
+        samples = sample_grippers(world, manager) if manager is not None else {}
+        flat.append(len(samples))
+        for path, sample in samples.items():
+            flat.append(path)
+            flat += sample
+        self._scene.capture(manager, flat)
+        self._pending += 1
+
+    def _encode(self, items: Iterator) -> dict:
+        """The next captured tick's record (*items* reads ``_captured`` in order): pulses, changed outputs,
+        changed gripper fields, topics, log lines, scene fields."""
+        take = items.__next__
+        record: dict[str, Any] = {"tick": take(), "t": take()}
+        pulses = list(islice(items, take()))
+        if pulses:
+            record["pulses"] = pulses
+        changed = self._changed_outputs(list(islice(items, len(self._keys))))
+        if changed:
+            record["outputs"] = changed
+        logs, topics = take(), take()
+        grippers = {}
+        for _gripper in range(take()):
+            path = take()
+            sample = GripperSample(take(), take(), take(), take(), take())
+            if path in self._unused:
+                continue    # a stage gripper the graph does not use
+            previous = self._grippers.get(path)
+            self._grippers[path] = sample
+            if previous == sample and sample.force == sample.force and sample.held_z == sample.held_z:
+                continue    # unchanged (NaN never equals itself: those go the long way)
+            fields = sample.fields()
+            old = previous.fields() if previous is not None else {}
+            delta = {key: value for key, value in fields.items() if _changed(old.get(key, _MISSING), value)}
+            if delta:
+                grippers[path] = delta
+        if grippers:
+            record["grippers"] = grippers
+        if topics:
+            record["topics"] = topics
+        if logs:
+            record["log"] = [{"node": node, "level": level, "message": message} for node, level, message in logs]
+        record.update(self._scene.encode(items))
+        return record
+
+    def _emit(self, record: dict) -> None:
+        if self.records is not None:
+            self.records.append(record)
+        if self.stream is not None:
+            self.stream.write(dumps_record(record) + "\n")
+
+    def _changed_outputs(self, values: list) -> dict[str, Any]:
+        """Outputs whose value changed; an immutable value equal to the last one is skipped unconverted."""
+        changed, written, last_raw, keys = {}, self._outputs, self._raw, self._keys
+        for index, raw in enumerate(values):
+            previous = last_raw[index]
+            kind = type(raw)
+            if kind is type(previous) and _unchanged(kind, previous, raw):
+                continue
+            last_raw[index] = raw
+            key = keys[index]
+            if kind in _SCALARS:   # the common case, compared without the general walk
+                old = written.get(key, _MISSING)
+                if old is _MISSING or (old != raw and not (raw != raw and old != old)):   # NaN stays NaN
+                    changed[key] = written[key] = raw
+                continue
+            value = list(raw) if kind is tuple else to_json_value(raw)   # a captured tuple holds scalars only
+            if _changed(written.get(key, _MISSING), value):
+                changed[key] = written[key] = value
+        return changed
+
+    def _write_header(self, graph: str | None, randomized: list[dict]) -> None:
+        document = self.simulation.document
+        world = self.simulation.world
+        compiled = self.instance.compiled
+        header = {
+            "format": TRACE_FORMAT,
+            "version": TRACE_VERSION,
+            "graph": same_path_text(graph if graph is not None else document.source),
+            "description": document.description,
+            "stage": document.settings.get("stage"),
+            "timeStep": world.time_step,
+            "nodes": {node.name: node.spec.id for node in compiled.nodes},
+            "outputs": dict(self._outputs),   # a copy: the recorder updates its own as outputs change
+            "phases": phase_outputs(compiled),
+            "grippers": self._used_grippers,
+            "versions": loaded_versions(),
+            **self._scene.header(),
+        }
+        if randomized:   # only a randomized run has it, so other traces stay as they were
+            header["randomized"] = randomized
+        self._emit(header)
+
+
+_MISSING = object()
+_SCALARS = (float, int, str, bool, type(None))
+_SCALAR_TYPES = frozenset(_SCALARS)
+
+
+def _scalar_items(value: tuple) -> bool:
+    """A tuple of scalars only: immutable, so capturing the reference captures the value."""
+    return set(map(type, value)) <= _SCALAR_TYPES
+
+
+def _unchanged(kind: type, previous: Any, raw: Any) -> bool:
+    """The same immutable value as last tick: a scalar, or a tuple (``_capture`` keeps only tuples of scalars;
+    lists and arrays a node may mutate in place were copied, and copies always go the long way)."""
+    if kind in _SCALARS or kind is tuple:
+        return previous is raw or previous == raw
+    return False
+
+
+def _changed(previous: Any, value: Any) -> bool:
+    """Different as written to the trace (so a NaN that stays NaN is no change)."""
+    if previous is _MISSING:
+        return True
+    return previous != value and not _same_but_nan(previous, value)
+
+
+def _same_but_nan(previous: Any, value: Any) -> bool:
+    """Unequal values that are written alike: NaN where the other has NaN (plain JSON values only)."""
+    if isinstance(previous, float) and isinstance(value, float):
+        return previous != previous and value != value
+    if isinstance(previous, list) and isinstance(value, list):
+        return len(previous) == len(value) and all(a == b or _same_but_nan(a, b) for a, b in zip(previous, value))
+    if isinstance(previous, dict) and isinstance(value, dict):
+        return list(previous) == list(value) and all(
+            previous[key] == value[key] or _same_but_nan(previous[key], value[key]) for key in previous)
+    return False
