@@ -8,10 +8,10 @@ Both also derive from the built-in class callers caught before this base existed
 """
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:   # imported for the annotations only: this module loads first, before the Ctrl-C handler is in place
-    from collections.abc import Sequence
+    from collections.abc import Callable, Sequence
     from importlib.abc import Loader
     from importlib.machinery import ModuleSpec
     from types import ModuleType
@@ -141,16 +141,21 @@ def _on_interrupt(_signal_number: int, _frame: object) -> None:
         raise KeyboardInterrupt
 
 
+_LOADED_WITH_INTERRUPTS_NOTED = ("pxr", "pybullet")
+
+
 class _DeferWhileLoading:
-    """Import hook of the command: while a ``pxr`` module loads, a Ctrl-C is only noted.
+    """Import hook of the command: while a ``pxr`` or ``pybullet`` module loads, a Ctrl-C is only noted.
 
     usd-core loads its library modules from C++ (``TfScriptModuleLoader``), which prints a Python
     error with its traceback and carries on: a ``KeyboardInterrupt`` raised there would be a
-    traceback on stderr and then lost. Noted instead, it is raised as soon as the import is done.
+    traceback on stderr and then lost. PyBullet's C initialisation imports modules of its own: a
+    ``KeyboardInterrupt`` raised inside those nested imports leaves an import lock held and the
+    process hangs. Noted instead, it is raised as soon as the import is done.
     """
 
     def find_spec(self, name: str, path: Sequence[str] | None = None, target: object = None) -> ModuleSpec | None:
-        if name != "pxr" and not name.startswith("pxr."):
+        if name.split(".", 1)[0] not in _LOADED_WITH_INTERRUPTS_NOTED:
             return None
         from importlib.machinery import PathFinder
 
@@ -161,24 +166,31 @@ class _DeferWhileLoading:
 
 
 class _DeferredLoader:
-    """A pxr module's own loader, run with a Ctrl-C only noted (``_DeferWhileLoading``)."""
+    """A module's own loader, run with a Ctrl-C only noted (``_DeferWhileLoading``): both steps, since an
+    extension module runs its C initialisation in ``create_module``."""
 
     def __init__(self, loader: Loader):
         self.loader = loader
 
     def create_module(self, spec: ModuleSpec) -> ModuleType | None:
-        return self.loader.create_module(spec)
+        module: ModuleType | None = self._noting_interrupts(self.loader.create_module, spec)
+        return module
 
     def exec_module(self, module: ModuleType) -> None:
+        self._noting_interrupts(self.loader.exec_module, module)
+
+    @staticmethod
+    def _noting_interrupts(step: Callable[[Any], Any], argument: Any) -> Any:
         outermost = not _Interrupts.deferred
         _Interrupts.deferred = True
         try:
-            self.loader.exec_module(module)
+            result = step(argument)
         finally:
             if outermost:
                 _Interrupts.deferred = False
         if outermost:
             raise_if_interrupted()
+        return result
 
     def __getattr__(self, name: str) -> object:
         return getattr(self.loader, name)
