@@ -153,3 +153,19 @@ def compute_unary(db, op, input_name, output, accept=is_number, kind="numbers"):
         db.error(f"inputs:{input_name}: {error}")
         return
     setattr(db.outputs, output, result)
+
+
+def zero_flags(db) -> tuple[bool, ...]:
+    """AnyZero's and EachZero's test: one flag per element of inputs:value (one for a scalar), true where it is
+    zero within inputs:tolerance; an element that is itself a tuple is zero when all its numbers are."""
+    def zero(element) -> bool:
+        if isinstance(element, tuple):
+            return all(zero(item) for item in element)
+        if not is_number(element):
+            db.error(f"inputs:value must hold numbers, got {element!r}")
+        return abs(element) <= db.inputs.tolerance
+
+    value = plain(db.inputs.value)
+    if value is None:
+        db.error("inputs:value has no value; connect it or set a value")
+    return tuple(zero(item) for item in value) if isinstance(value, tuple) else (zero(value),)

@@ -1,6 +1,6 @@
 """omni.graph.nodes.AnyZero: which elements of a value are zero, within a tolerance."""
 from graphflow.spec import Attribute, NodeSpec
-from graphflow_nodes._math import is_number, plain
+from graphflow_nodes._math import zero_flags
 
 SPEC = NodeSpec(
     id="omni.graph.nodes.AnyZero",
@@ -19,17 +19,5 @@ SPEC = NodeSpec(
 )
 
 
-def _zero(db, element) -> bool:
-    if isinstance(element, tuple):
-        return all(_zero(db, item) for item in element)
-    if not is_number(element):
-        db.error(f"inputs:value must hold numbers, got {element!r}")
-    return abs(element) <= db.inputs.tolerance
-
-
 def compute(db):
-    value = plain(db.inputs.value)
-    if value is None:
-        db.error("inputs:value has no value; connect it or set a value")
-    zeros = tuple(_zero(db, item) for item in value) if isinstance(value, tuple) else (_zero(db, value),)
-    db.outputs.result = any(zeros)
+    db.outputs.result = any(zero_flags(db))
