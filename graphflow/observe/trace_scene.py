@@ -45,6 +45,14 @@ def _shape(shape) -> dict:
     return item
 
 
+def force_limits(component) -> dict[str, float]:
+    """A surface gripper's force limits that are set (N), by name, as the force lane draws them."""
+    properties = component.properties
+    limits = {"force": properties.force_limit, "shear": properties.shear_force_limit,
+              "coaxial": properties.coaxial_force_limit}
+    return {name: float(value) for name, value in limits.items() if value > 0}
+
+
 class SceneSection:
     """Collects the scene fields of a trace for one simulation; ``header()`` once, ``capture()`` after each tick."""
 
@@ -116,10 +124,7 @@ class SceneSection:
             previous = self._gripper_status.get(path, "Open")
             self._gripper_status[path] = status
             if previous == "Open" and status != "Open":
-                properties = component.properties
-                limits = {"force": properties.force_limit, "shear": properties.shear_force_limit,
-                          "coaxial": properties.coaxial_force_limit}
-                rays[path] = {"limits": {name: float(value) for name, value in limits.items() if value > 0},
+                rays[path] = {"limits": force_limits(component),
                               "rays": [self._ray(component, point) for point in component.points]}
         return rays
 

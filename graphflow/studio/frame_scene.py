@@ -19,6 +19,7 @@ from graphflow.observe.trace import (
     to_json_value,
     used_grippers,
 )
+from graphflow.observe.trace_scene import force_limits
 from graphflow.report.build import POSE_DECIMALS
 
 TICK_FIELDS = ("status", "gripped", "reason")   # gripper fields noted on every tick; the others once a frame
@@ -44,12 +45,13 @@ class FrameScene:
         self._unused = {g.path for g in getattr(description, "surface_grippers", ())} - set(used_grippers(simulation))
         bodies = dict(getattr(description, "bodies", {}) or {})
         self._moving = [path for path, body in bodies.items() if body.kind != "static"]
-        self._poses = {path: _rounded(world.prim_pose(path)) for path in self._moving}
+        self._poses = {path: _rounded(pose) for path, pose in zip(self._moving, world.body_poses(self._moving))}
         self._changes: dict[str, list] = {}
         self._gripper_changes: dict[str, dict[str, list]] = {}
         self._gripper_last: dict[str, dict[str, Any]] = {}
         self._frame_fields: dict[str, dict[str, Any]] = {}
         self._limited: set[str] = set()
+        self._manager = None   # the world's gripper manager, once a node has made it
         simulation.add_listener(self)
 
     def on_tick(self, simulation, tick: int) -> None:
@@ -60,9 +62,11 @@ class FrameScene:
             if value != self._last[key]:
                 self._last[key] = value
                 self._changes.setdefault(key, []).append([count, value])
-        manager = surface_gripper_manager(simulation.world)
+        manager = self._manager
         if manager is None:
-            return
+            manager = self._manager = surface_gripper_manager(simulation.world)
+            if manager is None:
+                return
         for path in manager.components:
             if path in self._unused:
                 continue
@@ -78,8 +82,8 @@ class FrameScene:
         """``scene`` (poses of bodies that moved, grippers' force limits when first seen) and ``lanes`` since the last."""
         world, tick = self.simulation.world, self.simulation.instance.tick_count
         poses = {}
-        for path in self._moving:
-            pose = _rounded(world.prim_pose(path))
+        for path, read in zip(self._moving, world.body_poses(self._moving)):
+            pose = _rounded(read)
             if pose != self._poses[path]:
                 poses[path] = [tick, pose]
                 self._poses[path] = pose
@@ -94,17 +98,9 @@ class FrameScene:
                     grippers.setdefault(path, {})[name] = [[tick, value]]
             if path not in self._limited:
                 self._limited.add(path)
-                limits[path] = self._limits(path)
+                limits[path] = force_limits(surface_gripper_manager(world).component(path))
         phases, self._changes = self._changes, {}
         return {"scene": {"poses": poses, "limits": limits}, "lanes": {"phases": phases, "grippers": grippers}}
-
-    def _limits(self, path: str) -> dict[str, float]:
-        """The gripper's force limits (N) that are set, as the report's force lane draws them."""
-        properties = surface_gripper_manager(self.simulation.world).component(path).properties
-        limits = {"force": properties.force_limit, "shear": properties.shear_force_limit,
-                  "coaxial": properties.coaxial_force_limit}
-        return {name: float(value) for name, value in limits.items() if value > 0}
-
 
 def merge_parts(older: dict, newer: dict) -> dict:
     """The scene and lanes parts of two consecutive frames as one: the newest poses and limits, every lane change.
