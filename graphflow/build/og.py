@@ -9,16 +9,29 @@ Porting a script that builds an action graph means changing its import::
 like OmniGraph's, where ``graph`` is a ``graphflow.build.Graph``: ``graph.save("cell.json")`` writes
 the file ``graphflow run`` reads. Isaac's node type ids (current and ``omni.isaac.*``) and its
 ``inputs:``/``outputs:`` names are the ones graphflow's node types declare. Edits run in OmniGraph's
-order (deletions, variables, nodes, connections, disconnections, values), each checked at once.
+order (deletions, variables, nodes, attributes, connections, disconnections, values), each checked at
+once. What the importer of ``.usda`` graphs degrades, this degrades the same way, with one warning line
+(``OgCompatWarning``) each: renderer and GUI node types are dropped with their connections and values, an
+evaluator other than ``execution`` or an on-demand pipeline stage builds an action graph evaluated every tick,
+and a connection from a constant's ``inputs:value`` reads its output, as Kit lets it.
 """
 from __future__ import annotations
 
+import warnings
+import weakref
 from typing import Any
 
 from graphflow.build.graph import Graph, NodeHandle, Port
 from graphflow.errors import BadInput
+from graphflow.spec import NodeSpec
+from graphflow.usd.node_mapping import RENDERING_NODES
 
-__all__ = ["Controller", "GraphController", "Type", "BaseDataType", "get_graph_by_path"]
+__all__ = ["Controller", "GraphController", "Type", "BaseDataType", "GraphPipelineStage", "OgCompatWarning",
+           "get_graph_by_path"]
+
+
+class OgCompatWarning(UserWarning):
+    """One line about what an edit carried over differently from Kit (a dropped node, the evaluator)."""
 
 
 class Keys:
@@ -26,14 +39,24 @@ class Keys:
 
     CREATE_NODES = "create_nodes"
     CREATE_VARIABLES = "create_variables"
+    CREATE_ATTRIBUTES = "create_attributes"
     CONNECT = "connect"
     DISCONNECT = "disconnect"
     DELETE_NODES = "delete_nodes"
     SET_VALUES = "set_values"
 
 
-SUPPORTED = (Keys.DELETE_NODES, Keys.CREATE_VARIABLES, Keys.CREATE_NODES, Keys.CONNECT, Keys.DISCONNECT,
-             Keys.SET_VALUES)   # OmniGraph's order of operations within one edit
+SUPPORTED = (Keys.DELETE_NODES, Keys.CREATE_VARIABLES, Keys.CREATE_NODES, Keys.CREATE_ATTRIBUTES, Keys.CONNECT,
+             Keys.DISCONNECT, Keys.SET_VALUES)   # OmniGraph's order of operations within one edit
+
+
+class GraphPipelineStage:
+    """``og.GraphPipelineStage`` members scripts pass as ``pipeline_stage``."""
+
+    GRAPH_PIPELINE_STAGE_SIMULATION = "simulation"
+    GRAPH_PIPELINE_STAGE_PRERENDER = "prerender"
+    GRAPH_PIPELINE_STAGE_POSTRENDER = "postrender"
+    GRAPH_PIPELINE_STAGE_ONDEMAND = "ondemand"
 
 
 class BaseDataType:
@@ -54,6 +77,7 @@ class Type:
 
 
 _graphs: dict[str, Graph] = {}
+_dropped: "weakref.WeakKeyDictionary[Graph, set[str]]" = weakref.WeakKeyDictionary()   # renderer nodes left out
 
 
 def get_graph_by_path(path: str) -> Graph | None:
@@ -80,12 +104,16 @@ class Controller:
         for entry in _as_list(commands.get(Keys.CREATE_VARIABLES)):
             name, type_name, *default = entry
             graph.variable(name, str(type_name), *default)
-        created = [graph.node(name, type_id) for name, type_id in _pairs(commands.get(Keys.CREATE_NODES))]
-        for src, dst in _pairs(commands.get(Keys.CONNECT)):
-            graph.connect(_port(src), _port(dst))
-        for src, dst in _pairs(commands.get(Keys.DISCONNECT)):
-            graph.disconnect(_port(src), _port(dst))
-        values = [(target, value) for target, value, *_type in _pairs(commands.get(Keys.SET_VALUES), width=None)]
+        made = [_create(graph, name, type_id) for name, type_id in _pairs(commands.get(Keys.CREATE_NODES))]
+        created = [node for node in made if node is not None]
+        for target, *_type in _pairs(commands.get(Keys.CREATE_ATTRIBUTES), width=None):
+            _declared(graph, _port(target))
+        for src, dst in _kept(graph, _pairs(commands.get(Keys.CONNECT))):
+            graph.connect(_source(graph, src), _port(dst))
+        for src, dst in _kept(graph, _pairs(commands.get(Keys.DISCONNECT))):
+            graph.disconnect(_source(graph, src), _port(dst))
+        values = _kept(graph, [(target, value) for target, value, *_type
+                               in _pairs(commands.get(Keys.SET_VALUES), width=None)], ports=1)
         if values:
             graph.set_many({_port(target): value for target, value in values})
         lookup = {node.name: node for node in created}
@@ -108,17 +136,20 @@ class Controller:
     def set(cls, attribute: Any, value: Any, **_options) -> None:
         """``og.Controller.set(attribute, value)``: author an input of a graph an earlier edit made."""
         graph, port = _graph_and_port(attribute)
-        graph.set(port, value)
+        if _kept(graph, [(port,)], ports=1):
+            graph.set(port, value)
 
     @classmethod
     def connect(cls, src: Any, dst: Any, **_options) -> None:
         graph, source = _graph_and_port(src)
-        graph.connect(source, _graph_and_port(dst)[1])
+        if _kept(graph, [(source, _graph_and_port(dst)[1])]):
+            graph.connect(_source(graph, source), _graph_and_port(dst)[1])
 
     @classmethod
     def disconnect(cls, src: Any, dst: Any, **_options) -> None:
         graph, source = _graph_and_port(src)
-        graph.disconnect(source, _graph_and_port(dst)[1])
+        if _kept(graph, [(source, _graph_and_port(dst)[1])]):
+            graph.disconnect(_source(graph, source), _graph_and_port(dst)[1])
 
 
 GraphController = Controller
@@ -140,20 +171,79 @@ def _graph_and_port(attribute: Any) -> tuple[Graph, str | Port]:
 def _graph_of(graph_id: Any) -> Graph:
     if isinstance(graph_id, Graph):
         return graph_id
-    if isinstance(graph_id, dict):
-        path = graph_id.get("graph_path")
-        evaluator = graph_id.get("evaluator_name", "execution")
-        if evaluator != "execution":
-            raise BadInput(f"og.Controller.edit: evaluator {evaluator!r}: graphflow runs action graphs "
-                           "(evaluator_name 'execution')")
-    else:
-        path = graph_id
+    path = graph_id.get("graph_path") if isinstance(graph_id, dict) else graph_id
     if not isinstance(path, str) or not path.startswith("/"):
         raise BadInput(f"og.Controller.edit: {graph_id!r} does not name a graph (give {{'graph_path': '/ActionGraph'}})")
+    if isinstance(graph_id, dict) and path not in _graphs:
+        evaluator = graph_id.get("evaluator_name", "execution")
+        if evaluator != "execution":
+            _warn(f"{path}: evaluator {evaluator!r} built as an action graph (execution)")
+        if graph_id.get("pipeline_stage") == GraphPipelineStage.GRAPH_PIPELINE_STAGE_ONDEMAND:
+            _warn(f"{path}: pipeline stage on-demand built as a graph evaluated every tick (the script's own "
+                  "evaluate calls are not carried over)")
     if path not in _graphs:
         _graphs[path] = Graph(description=f"Built by og.Controller.edit at {path}",
                               settings={"evaluator": "execution"})
     return _graphs[path]
+
+
+def _warn(line: str) -> None:
+    warnings.warn(OgCompatWarning(f"og.Controller.edit: {line}"), stacklevel=4)
+
+
+def _create(graph: Graph, name: str, type_id: str) -> NodeHandle | None:
+    """The node, or None for a renderer/GUI type, dropped with one line as the importer drops it."""
+    if type_id in RENDERING_NODES:
+        _dropped.setdefault(graph, set()).add(name)
+        _warn(f"node '{name}' ({type_id}): dropped with its connections and values: {RENDERING_NODES[type_id]}")
+        return None
+    return graph.node(name, type_id)
+
+
+def _kept(graph: Graph, entries: list, ports: int = 2) -> list:
+    """*entries* without those whose first *ports* items name a node ``_create`` dropped (named then)."""
+    dropped = _dropped.get(graph, set())
+    return [entry for entry in entries if not any(_node_of(graph, _port(part)) in dropped for part in entry[:ports])]
+
+
+def _node_of(graph: Graph, port: str | Port) -> str:
+    if isinstance(port, Port):
+        return port.node
+    path = next((p for p, g in _graphs.items() if g is graph), "")
+    text = port[len(path) + 1:] if path and port.startswith(path + "/") else port
+    return text.split(".", 1)[0]
+
+
+def _source(graph: Graph, port: Any) -> str | Port:
+    """A connection's source; Kit lets a constant be read from its ``inputs:value``: its output here."""
+    source = _port(port)
+    if isinstance(source, Port) or ".inputs:" not in source:
+        return source
+    head, name = source.rsplit(".inputs:", 1)
+    spec = _spec_of(graph, _node_of(graph, source))
+    if spec is not None and any(output.name == name for output in spec.outputs):
+        return f"{head}.outputs:{name}"
+    return source
+
+
+def _spec_of(graph: Graph, node_name: str) -> NodeSpec | None:
+    node = graph.document.node(node_name)
+    node_type = graph.registry.get(node.type) if node is not None else None
+    return node_type.spec if node_type is not None else None
+
+
+def _declared(graph: Graph, port: str | Port) -> None:
+    """``CREATE_ATTRIBUTES``: graphflow's node types declare every port; the one named must be there."""
+    text = str(port)
+    node_name = _node_of(graph, text)
+    spec = _spec_of(graph, node_name)
+    if spec is None:
+        raise BadInput(f"og.Controller.edit: create_attributes {text}: no node '{node_name}' in the graph")
+    group, _, name = text.rsplit(".", 1)[-1].partition(":")
+    ports = spec.inputs if group == "inputs" else spec.outputs if group == "outputs" else ()
+    if not any(attribute.name == name for attribute in ports):
+        raise BadInput(f"og.Controller.edit: create_attributes {text}: {spec.id} has no {group or 'port'} "
+                       f"'{name}' (graphflow's node types declare their ports; dynamic ones are not added)")
 
 
 def _as_list(entries: Any) -> list:

@@ -12,6 +12,7 @@ from graphflow.build import og
 from graphflow.cli import main
 from graphflow.errors import BadInput
 from graphflow.model import GraphError
+from graphflow.testing.harness import GraphHarness
 from graphflow.verdicts.checked_run import run_checked
 
 SCRIPTS = ROOT / "tests" / "build" / "isaac_scripts"
@@ -86,8 +87,6 @@ def test_edit_refuses_what_it_cannot_build_with_one_line():
     keys = og.Controller.Keys
     with pytest.raises(BadInput, match="expose_prims not supported"):
         og.Controller.edit(next(_paths), {"expose_prims": []})
-    with pytest.raises(BadInput, match="evaluator 'push'"):
-        og.Controller.edit({"graph_path": next(_paths), "evaluator_name": "push"}, {})
     path = next(_paths)
     with pytest.raises(GraphError, match="node 'write' input 'inputs:prim'|node 'write'.*no input 'primm'"):
         og.Controller.edit(path, {keys.CREATE_NODES: [("write", "omni.graph.nodes.WritePrimAttribute")],
@@ -111,3 +110,72 @@ def test_controller_set_connect_and_attribute_address_ports_by_their_full_path()
         og.Controller.set("/Nowhere/x.inputs:a", 1)
     with pytest.raises(GraphError, match="node 'text' input 'inputs:formatt'"):
         og.Controller.set(f"{path}/text.inputs:formatt", "x")
+
+
+def test_push_and_on_demand_graphs_build_as_action_graphs_with_one_line_each():
+    """Kit's push evaluator and on-demand stage (a script calling evaluate per frame): ticked every step here."""
+    keys, path = og.Controller.Keys, next(_paths)
+    with pytest.warns(og.OgCompatWarning) as lines:
+        graph, *_ = og.Controller.edit(
+            {"graph_path": path, "evaluator_name": "push",
+             "pipeline_stage": og.GraphPipelineStage.GRAPH_PIPELINE_STAGE_ONDEMAND},
+            {keys.CREATE_NODES: [("tick", "omni.graph.action.OnTick"), ("count", "omni.graph.action.Counter")],
+             keys.CONNECT: [("tick.outputs:tick", "count.inputs:execIn")]})
+    assert [str(line.message) for line in lines] == [
+        f"og.Controller.edit: {path}: evaluator 'push' built as an action graph (execution)",
+        f"og.Controller.edit: {path}: pipeline stage on-demand built as a graph evaluated every tick "
+        "(the script's own evaluate calls are not carried over)"]
+    assert len(graph.document.connections) == 1
+
+
+def test_renderer_nodes_are_dropped_with_their_connections_and_values_as_the_importer_drops_them():
+    keys, path = og.Controller.Keys, next(_paths)
+    with pytest.warns(og.OgCompatWarning) as lines:
+        graph, nodes, _, _ = og.Controller.edit({"graph_path": path, "evaluator_name": "execution"}, {
+            keys.CREATE_NODES: [("tick", "omni.graph.action.OnPlaybackTick"),
+                                ("render", "omni.isaac.core_nodes.IsaacCreateRenderProduct"),
+                                ("camera", "isaacsim.ros2.bridge.ROS2CameraHelper"),
+                                ("count", "omni.graph.action.Counter")],
+            keys.CONNECT: [("tick.outputs:tick", "render.inputs:execIn"),
+                           ("render.outputs:renderProductPath", "camera.inputs:renderProductPath"),
+                           ("tick.outputs:tick", "count.inputs:execIn")],
+            keys.SET_VALUES: [("render.inputs:cameraPrim", "/World/Camera"), ("camera.inputs:type", "rgb")]})
+    assert [str(line.message).split(": dropped")[0] for line in lines] == [
+        "og.Controller.edit: node 'render' (omni.isaac.core_nodes.IsaacCreateRenderProduct)",
+        "og.Controller.edit: node 'camera' (isaacsim.ros2.bridge.ROS2CameraHelper)"]
+    assert all("renderer" in str(line.message) for line in lines)
+    assert [node.name for node in nodes] == ["tick", "count"]
+    assert [(c.src, c.dst) for c in graph.document.connections] == [("tick.outputs:tick", "count.inputs:execIn")]
+    og.Controller.set(f"{path}/camera.inputs:topicName", "rgb")   # later edits of a dropped node go too
+    assert [node.name for node in graph.document.nodes] == ["tick", "count"]
+
+
+def test_a_constant_read_from_its_input_value_feeds_the_connection_as_in_kit():
+    """Kit's constants hold their value on ``inputs:value`` and scripts connect from it (ConstantToken -> array)."""
+    keys, path = og.Controller.Keys, next(_paths)
+    graph, *_ = og.Controller.edit(path, {
+        keys.CREATE_NODES: [("left", "omni.graph.nodes.ConstantToken"), ("right", "omni.graph.nodes.ConstantToken"),
+                            ("names", "omni.graph.nodes.ConstructArray")],
+        keys.CREATE_ATTRIBUTES: [("names.inputs:input1", "token")],
+        keys.CONNECT: [("left.inputs:value", "names.inputs:input0"), ("right.inputs:value", "names.inputs:input1")],
+        keys.SET_VALUES: [("names.inputs:arraySize", 2), ("names.inputs:arrayType", "token[]"),
+                          ("left.inputs:value", "wheel_left_joint"), ("right.inputs:value", "wheel_right_joint")]})
+    assert [c.src for c in graph.document.connections] == ["left.outputs:value", "right.outputs:value"]
+    og.Controller.edit(path, {   # a consumer pulls the array each tick
+        keys.CREATE_NODES: [("tick", "omni.graph.action.OnTick"), ("text", "graphflow.FormatText"),
+                            ("show", "omni.graph.ui_nodes.PrintText")],
+        keys.CONNECT: [("tick.outputs:tick", "show.inputs:execIn"), ("names.outputs:array", "text.inputs:value"),
+                       ("text.outputs:text", "show.inputs:text")]})
+    harness = GraphHarness(graph.document)
+    harness.run(1)
+    assert list(harness.output("names", "array")) == ["wheel_left_joint", "wheel_right_joint"]
+
+
+def test_create_attributes_names_ports_the_node_type_declares_or_refuses_with_one_line():
+    keys, path = og.Controller.Keys, next(_paths)
+    og.Controller.edit(path, {keys.CREATE_NODES: [("names", "omni.graph.nodes.ConstructArray")],
+                              keys.CREATE_ATTRIBUTES: [("names.inputs:input2", "token")]})
+    with pytest.raises(BadInput, match="create_attributes names.inputs:speed: omni.graph.nodes.ConstructArray "
+                                       "has no inputs 'speed'"):
+        og.Controller.edit(path, {keys.CREATE_ATTRIBUTES: [("names.inputs:speed", "double")]})
+
