@@ -62,7 +62,7 @@ class GraphPipelineStage:
 class BaseDataType:
     """``og.BaseDataType`` members scripts pass to ``og.Type`` for variables, as graphflow type names."""
 
-    BOOL, INT, UINT, INT64, UINT64 = "bool", "int", "uint", "int64", "uint64"
+    BOOL, UCHAR, INT, UINT, INT64, UINT64 = "bool", "uchar", "int", "uint", "int64", "uint64"
     FLOAT, DOUBLE, HALF, TOKEN, PATH = "float", "double", "half", "token", "path"
 
 
@@ -70,7 +70,7 @@ class Type:
     """``og.Type(base, tuple_count=1, array_depth=0)``: a variable's type, spelled as graph files spell it."""
 
     def __init__(self, base: str, tuple_count: int = 1, array_depth: int = 0):
-        self.name = base + (str(tuple_count) if tuple_count > 1 else "") + "[]" * array_depth
+        self.name = base + (f"[{tuple_count}]" if tuple_count > 1 else "") + "[]" * array_depth
 
     def __str__(self) -> str:
         return self.name

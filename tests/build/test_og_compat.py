@@ -179,3 +179,13 @@ def test_create_attributes_names_ports_the_node_type_declares_or_refuses_with_on
                                        "has no inputs 'speed'"):
         og.Controller.edit(path, {keys.CREATE_ATTRIBUTES: [("names.inputs:speed", "double")]})
 
+
+
+def test_variables_of_every_og_base_type_scripts_use_are_created():
+    keys, path = og.Controller.Keys, next(_paths)
+    graph, *_ = og.Controller.edit(path, {keys.CREATE_VARIABLES: [
+        ("domainID", og.Type(og.BaseDataType.UCHAR), 7), ("vehicleID", og.Type(og.BaseDataType.INT), 1),
+        ("gains", og.Type(og.BaseDataType.DOUBLE, 3), [1.0, 2.0, 3.0]), ("name", "string", "quad0")]})
+    assert [(v.name, v.type, v.default) for v in graph.document.variables] == [
+        ("domainID", "uchar", 7), ("vehicleID", "int", 1), ("gains", "double[3]", [1.0, 2.0, 3.0]),
+        ("name", "string", "quad0")]
