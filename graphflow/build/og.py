@@ -76,6 +76,14 @@ class Type:
         return self.name
 
 
+# Inputs Isaac 4.x scripts set that later versions of the node removed (the 4.x .ogn against today's):
+# dropped with one line saying what replaced them.
+REMOVED_INPUTS = {
+    "isaacsim.core.nodes.IsaacArticulationController": {
+        "usePath": "Isaac 4.x's switch between robotPath and targetPrim; since 4.5 robotPath is used when set, "
+                   "else targetPrim"},
+}
+
 _graphs: dict[str, Graph] = {}
 _dropped: "weakref.WeakKeyDictionary[Graph, set[str]]" = weakref.WeakKeyDictionary()   # renderer nodes left out
 
@@ -112,8 +120,8 @@ class Controller:
             graph.connect(_source(graph, src), _port(dst))
         for src, dst in _kept(graph, _pairs(commands.get(Keys.DISCONNECT))):
             graph.disconnect(_source(graph, src), _port(dst))
-        values = _kept(graph, [(target, value) for target, value, *_type
-                               in _pairs(commands.get(Keys.SET_VALUES), width=None)], ports=1)
+        values = _current(graph, _kept(graph, [(target, value) for target, value, *_type
+                                               in _pairs(commands.get(Keys.SET_VALUES), width=None)], ports=1))
         if values:
             graph.set_many({_port(target): value for target, value in values})
         lookup = {node.name: node for node in created}
@@ -136,7 +144,7 @@ class Controller:
     def set(cls, attribute: Any, value: Any, **_options) -> None:
         """``og.Controller.set(attribute, value)``: author an input of a graph an earlier edit made."""
         graph, port = _graph_and_port(attribute)
-        if _kept(graph, [(port,)], ports=1):
+        if _current(graph, _kept(graph, [(port, value)], ports=1)):
             graph.set(port, value)
 
     @classmethod
@@ -204,6 +212,30 @@ def _kept(graph: Graph, entries: list, ports: int = 2) -> list:
     """*entries* without those whose first *ports* items name a node ``_create`` dropped (named then)."""
     dropped = _dropped.get(graph, set())
     return [entry for entry in entries if not any(_node_of(graph, _port(part)) in dropped for part in entry[:ports])]
+
+
+def _current(graph: Graph, values: list) -> list:
+    """*values* without inputs the node's Isaac 4.x version had and later versions removed (one line each).
+
+    ``usePath`` false meant "targetPrim, not robotPath": a robotPath authored in the same values goes too.
+    """
+    kept, ignore_robot_path = [], set()
+    for target, value in values:
+        node = _node_of(graph, _port(target))
+        spec = _spec_of(graph, node)
+        name = str(_port(target)).rsplit(".inputs:", 1)[-1]
+        reason = REMOVED_INPUTS.get(spec.id, {}).get(name) if spec is not None else None
+        if reason is None:
+            kept.append((target, value))
+            continue
+        _warn(f"node '{node}' input 'inputs:{name}' = {value!r}: dropped: {reason}")
+        if name == "usePath" and value is False:
+            ignore_robot_path.add(node)
+    dropped = [(t, v) for t, v in kept if _node_of(graph, _port(t)) in ignore_robot_path
+               and str(_port(t)).endswith(".inputs:robotPath")]
+    for target, value in dropped:
+        _warn(f"node '{_node_of(graph, _port(target))}' input 'inputs:robotPath' = {value!r}: dropped: usePath is false")
+    return [entry for entry in kept if entry not in dropped]
 
 
 def _node_of(graph: Graph, port: str | Port) -> str:

@@ -189,3 +189,22 @@ def test_variables_of_every_og_base_type_scripts_use_are_created():
     assert [(v.name, v.type, v.default) for v in graph.document.variables] == [
         ("domainID", "uchar", 7), ("vehicleID", "int", 1), ("gains", "double[3]", [1.0, 2.0, 3.0]),
         ("name", "string", "quad0")]
+
+
+def test_isaac_4_use_path_is_dropped_with_a_line_and_false_keeps_the_target_prim():
+    """IsaacArticulationController 4.x: usePath chose robotPath (true) or targetPrim (false); since 4.5 robotPath
+    is used when set, else targetPrim (the .ogn), so false means the robotPath given beside it is not used."""
+    keys, path = og.Controller.Keys, next(_paths)
+    with pytest.warns(og.OgCompatWarning) as lines:
+        graph, *_ = og.Controller.edit(path, {
+            keys.CREATE_NODES: [("arm", "omni.isaac.core_nodes.IsaacArticulationController"),
+                                ("base", "omni.isaac.core_nodes.IsaacArticulationController")],
+            keys.SET_VALUES: [("arm.inputs:usePath", True), ("arm.inputs:robotPath", "/World/Arm"),
+                              ("base.inputs:usePath", False), ("base.inputs:robotPath", "/World/Old"),
+                              ("base.inputs:targetPrim", ["/World/Base"])]})
+    assert [str(line.message).split(": dropped")[0] for line in lines] == [
+        "og.Controller.edit: node 'arm' input 'inputs:usePath' = True",
+        "og.Controller.edit: node 'base' input 'inputs:usePath' = False",
+        "og.Controller.edit: node 'base' input 'inputs:robotPath' = '/World/Old'"]
+    assert graph.document.node("arm").inputs == {"robotPath": "/World/Arm"}
+    assert graph.document.node("base").inputs == {"targetPrim": ["/World/Base"]}
