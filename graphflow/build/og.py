@@ -24,7 +24,9 @@ from typing import Any
 from graphflow.build.graph import Graph, NodeHandle, Port
 from graphflow.errors import BadInput
 from graphflow.spec import NodeSpec
-from graphflow.usd.node_mapping import RENDERING_NODES
+from graphflow.usd.node_mapping import GENERIC_SUBSCRIBERS, RENDERING_NODES
+
+MESSAGE_FIELD = "graphflow.ROS2MessageField"
 
 __all__ = ["Controller", "GraphController", "Type", "BaseDataType", "GraphPipelineStage", "OgCompatWarning",
            "get_graph_by_path"]
@@ -247,15 +249,35 @@ def _node_of(graph: Graph, port: str | Port) -> str:
 
 
 def _source(graph: Graph, port: Any) -> str | Port:
-    """A connection's source; Kit lets a constant be read from its ``inputs:value``: its output here."""
+    """A connection's source; Kit lets a constant be read from its ``inputs:value``: its output here; a generic
+    subscriber's per-field output (Kit's ``outputs:data``) is read from its message by a ROS2MessageField node."""
     source = _port(port)
-    if isinstance(source, Port) or ".inputs:" not in source:
+    if isinstance(source, Port):
+        return source
+    if ".outputs:" in source:
+        node, name = _node_of(graph, source), source.rsplit(".outputs:", 1)[1]
+        spec = _spec_of(graph, node)
+        if spec is not None and spec.id in GENERIC_SUBSCRIBERS and spec.attribute(f"outputs:{name}") is None:
+            return _message_field(graph, node, name)
+    if ".inputs:" not in source:
         return source
     head, name = source.rsplit(".inputs:", 1)
     spec = _spec_of(graph, _node_of(graph, source))
     if spec is not None and any(output.name == name for output in spec.outputs):
         return f"{head}.outputs:{name}"
     return source
+
+
+def _message_field(graph: Graph, subscriber: str, field: str) -> str:
+    """The output of the ROS2MessageField node reading *field* of *subscriber*'s message (made on first use)."""
+    name = f"{subscriber}_{field.replace(':', '_')}"
+    if graph.document.node(name) is None:
+        graph.node(name, MESSAGE_FIELD)
+        graph.set(f"{name}.inputs:field", field)
+        graph.connect(f"{subscriber}.outputs:message", f"{name}.inputs:message")
+        _warn(f"node '{subscriber}' output 'outputs:{field}': Kit's per-field output read from outputs:message "
+              f"by node '{name}' ({MESSAGE_FIELD})")
+    return f"{name}.outputs:value"
 
 
 def _spec_of(graph: Graph, node_name: str) -> NodeSpec | None:

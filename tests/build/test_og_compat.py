@@ -208,3 +208,23 @@ def test_isaac_4_use_path_is_dropped_with_a_line_and_false_keeps_the_target_prim
         "og.Controller.edit: node 'base' input 'inputs:robotPath' = '/World/Old'"]
     assert graph.document.node("arm").inputs == {"robotPath": "/World/Arm"}
     assert graph.document.node("base").inputs == {"targetPrim": ["/World/Base"]}
+
+
+def test_a_generic_subscribers_field_output_is_read_from_its_message_as_kits_field_outputs():
+    """Kit's ROS2Subscriber has one output per field (std_msgs/Float32: outputs:data); here a ROS2MessageField
+    node reads it from outputs:message, holding the type's default (0.0) until a message arrives, as Kit does."""
+    keys, path = og.Controller.Keys, next(_paths)
+    with pytest.warns(og.OgCompatWarning, match="output 'outputs:data': .* by node 'pan_data'"):
+        graph, *_ = og.Controller.edit(path, {
+            keys.CREATE_VARIABLES: [("pan", "float", 0.5)],
+            keys.CREATE_NODES: [("tick", "omni.graph.action.OnPlaybackTick"),
+                                ("pan", "omni.isaac.ros2_bridge.ROS2Subscriber"),
+                                ("write", "omni.graph.core.WriteVariable")],
+            keys.CONNECT: [("tick.outputs:tick", "pan.inputs:execIn"), ("tick.outputs:tick", "write.inputs:execIn"),
+                           (f"{path}/pan.outputs:data", "write.inputs:value")],
+            keys.SET_VALUES: [("pan.inputs:messageName", "Float32"), ("pan.inputs:topicName", "pan"),
+                              ("write.inputs:variableName", "pan")]})
+    assert graph.document.node("pan_data").inputs == {"field": "data"}
+    harness = GraphHarness(graph.document)
+    harness.run(1)
+    assert harness.instance.variables["pan"] == 0.0

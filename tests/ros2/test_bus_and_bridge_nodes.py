@@ -202,3 +202,21 @@ def test_joint_state_refuses_a_reading_whose_arrays_disagree_or_nothing_to_publi
         node.compute("execIn")
     with pytest.raises(GraphRuntimeError, match="no Isaac Read Joint State arrays are connected"):
         NodeHarness(BRIDGE + "ROS2PublishJointState", {}).compute("execIn")
+
+
+def test_a_message_field_reads_nested_and_array_fields_and_names_a_missing_one():
+    """graphflow.ROS2MessageField: Kit's field output names ('data', 'header:stamp:sec') on the JSON message."""
+    message = json.dumps({"header": {"stamp": {"sec": 3, "nanosec": 5}, "frame_id": "odom"}, "data": [1.0, 2.5]})
+    nested = NodeHarness("graphflow.ROS2MessageField", {"message": message, "field": "header:stamp:sec"})
+    assert nested.compute().outputs["value"] == 3
+    array = NodeHarness("graphflow.ROS2MessageField", {"message": message, "field": "data"})
+    assert array.compute().outputs["value"] == (1.0, 2.5)
+    with pytest.raises(GraphRuntimeError, match="no field 'seq' .*fields: frame_id, stamp"):
+        NodeHarness("graphflow.ROS2MessageField", {"message": message, "field": "header:seq"}).compute()
+
+
+def test_generic_subscriber_holds_the_types_defaults_until_the_first_message():
+    """As Kit's per-field outputs hold their defaults: std_msgs/Float32 data 0.0, execOut not fired."""
+    node = NodeHarness(BRIDGE + "ROS2Subscriber", {"topicName": "/pan", "messageName": "Float32"})
+    assert node.tick("execIn").fired == set()
+    assert json.loads(node.outputs.message) == {"data": 0.0}
