@@ -17,14 +17,22 @@ and a connection from a constant's ``inputs:value`` reads its output, as Kit let
 """
 from __future__ import annotations
 
+import json
 import warnings
 import weakref
 from typing import Any
 
+from graphflow.build import og_legacy
 from graphflow.build.graph import Graph, NodeHandle, Port
 from graphflow.errors import BadInput
 from graphflow.spec import NodeSpec
-from graphflow.usd.node_mapping import GENERIC_SUBSCRIBERS, RENDERING_NODES
+from graphflow.usd.node_mapping import (
+    GENERIC_PUBLISHERS,
+    GENERIC_SUBSCRIBERS,
+    MESSAGE_FIELDS,
+    RENDERING_NODES,
+    gather_message_fields,
+)
 
 MESSAGE_FIELD = "graphflow.ROS2MessageField"
 
@@ -88,6 +96,7 @@ REMOVED_INPUTS = {
 
 _graphs: dict[str, Graph] = {}
 _dropped: "weakref.WeakKeyDictionary[Graph, set[str]]" = weakref.WeakKeyDictionary()   # renderer nodes left out
+_legacy: "weakref.WeakKeyDictionary[Graph, set[str]]" = weakref.WeakKeyDictionary()    # Isaac 4.x grippers (v1)
 
 
 def get_graph_by_path(path: str) -> Graph | None:
@@ -118,14 +127,14 @@ class Controller:
         created = [node for node in made if node is not None]
         for target, *_type in _pairs(commands.get(Keys.CREATE_ATTRIBUTES), width=None):
             _declared(graph, _port(target))
-        for src, dst in _kept(graph, _pairs(commands.get(Keys.CONNECT))):
-            graph.connect(_source(graph, src), _port(dst))
+        for src, dst in _wired(graph, _kept(graph, _pairs(commands.get(Keys.CONNECT)))):
+            graph.connect(_mapped(graph, _source(graph, src)), _mapped(graph, _port(dst)))
         for src, dst in _kept(graph, _pairs(commands.get(Keys.DISCONNECT))):
-            graph.disconnect(_source(graph, src), _port(dst))
+            graph.disconnect(_mapped(graph, _source(graph, src)), _mapped(graph, _port(dst)))
         values = _current(graph, _kept(graph, [(target, value) for target, value, *_type
                                                in _pairs(commands.get(Keys.SET_VALUES), width=None)], ports=1))
         if values:
-            graph.set_many({_port(target): value for target, value in values})
+            graph.set_many(_legacy_values(graph, {_port(target): value for target, value in values}))
         lookup = {node.name: node for node in created}
         return graph, created, [], lookup
 
@@ -147,19 +156,19 @@ class Controller:
         """``og.Controller.set(attribute, value)``: author an input of a graph an earlier edit made."""
         graph, port = _graph_and_port(attribute)
         if _current(graph, _kept(graph, [(port, value)], ports=1)):
-            graph.set(port, value)
+            graph.set_many(_legacy_values(graph, {port: value}))
 
     @classmethod
     def connect(cls, src: Any, dst: Any, **_options) -> None:
         graph, source = _graph_and_port(src)
-        if _kept(graph, [(source, _graph_and_port(dst)[1])]):
-            graph.connect(_source(graph, source), _graph_and_port(dst)[1])
+        if _wired(graph, _kept(graph, [(source, _graph_and_port(dst)[1])])):
+            graph.connect(_mapped(graph, _source(graph, source)), _mapped(graph, _graph_and_port(dst)[1]))
 
     @classmethod
     def disconnect(cls, src: Any, dst: Any, **_options) -> None:
         graph, source = _graph_and_port(src)
         if _kept(graph, [(source, _graph_and_port(dst)[1])]):
-            graph.disconnect(_source(graph, source), _graph_and_port(dst)[1])
+            graph.disconnect(_mapped(graph, _source(graph, source)), _mapped(graph, _graph_and_port(dst)[1]))
 
 
 GraphController = Controller
@@ -207,7 +216,68 @@ def _create(graph: Graph, name: str, type_id: str) -> NodeHandle | None:
         _dropped.setdefault(graph, set()).add(name)
         _warn(f"node '{name}' ({type_id}): dropped with its connections and values: {RENDERING_NODES[type_id]}")
         return None
+    if type_id == og_legacy.V1_ID:
+        _legacy.setdefault(graph, set()).add(name)
+        return og_legacy.create(graph, name, _warn)
     return graph.node(name, type_id)
+
+
+def _mapped(graph: Graph, port: str | Port) -> str | Port:
+    """*port* as the mapped graph has it: an Isaac 4.x gripper's v1 pins moved to the nodes standing for it."""
+    node = _node_of(graph, port)
+    if isinstance(port, Port) or node not in _legacy.get(graph, set()):
+        return port
+    return og_legacy.endpoint(graph, node, str(port).rsplit(".", 1)[1], _warn)
+
+
+def _field_input(graph: Graph, port: str | Port) -> tuple[str, str] | None:
+    """(node, field) when *port* is a per-field input Kit gives a generic publisher (``inputs:header:stamp:sec``)."""
+    node, text = _node_of(graph, port), str(port)
+    spec = _spec_of(graph, node)
+    if spec is None or spec.id not in GENERIC_PUBLISHERS or ".inputs:" not in text:
+        return None
+    field = text.rsplit(".inputs:", 1)[1]
+    return None if spec.attribute(f"inputs:{field}") is not None else (node, field)
+
+
+def _wired(graph: Graph, pairs: list) -> list:
+    """*pairs* without connections into a generic publisher's message fields, dropped with a line as on import."""
+    kept = []
+    for src, dst in pairs:
+        field = _field_input(graph, _port(dst))
+        if field is None:
+            kept.append((src, dst))
+        else:
+            _warn(f"node '{field[0]}' input 'inputs:{field[1]}': connection from {_port(src)} dropped: graphflow's "
+                  f"publisher takes its message fields as values ('inputs:{MESSAGE_FIELDS}'), not connections")
+    return kept
+
+
+def _legacy_values(graph: Graph, values: dict) -> dict:
+    """*values* with those of Isaac 4.x grippers mapped to the legacy gripper's inputs (one line each)."""
+    legacy = _legacy.get(graph, set())
+    mapped: dict = {}
+    by_node: dict[str, dict] = {}
+    fields: dict[str, dict] = {}
+    for target, value in values.items():
+        node = _node_of(graph, target)
+        field = _field_input(graph, target)
+        if field is not None:
+            fields.setdefault(node, {})[field[1]] = value
+        elif node in legacy and ".inputs:" in str(target):
+            by_node.setdefault(node, {})[str(target).rsplit(".inputs:", 1)[1]] = value
+        else:
+            mapped[target] = value
+    for node, authored in by_node.items():
+        mapped.update({f"{node}.inputs:{name}": value for name, value in og_legacy.values(node, authored, _warn).items()})
+    for node, given in fields.items():   # merged into the fields the node already has
+        handle = graph.document.node(node)
+        before = json.loads(handle.inputs.get(MESSAGE_FIELDS, "{}")) if handle is not None else {}
+        notes: list[str] = []
+        mapped[f"{node}.inputs:{MESSAGE_FIELDS}"] = gather_message_fields({**before, **given}, f"node '{node}'", notes)
+        for note in notes:
+            _warn(note)
+    return mapped
 
 
 def _kept(graph: Graph, entries: list, ports: int = 2) -> list:

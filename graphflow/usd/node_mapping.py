@@ -126,9 +126,10 @@ def map_legacy_surface_gripper(name: str, authored: dict, where: str, notes: lis
 
 
 def legacy_gripper_renames(name: str) -> dict:
-    """Where connections into a v1 SurfaceGripper's exec pins go: onStep to the legacy node, Close/Open to its command node."""
+    """Where connections of a v1 SurfaceGripper's pins go: onStep and Closed to the legacy node, Close/Open to its
+    command node."""
     command = f"{name}{COMMAND_NODE_SUFFIX}"
-    return {(name, "inputs:onStep"): f"{name}.inputs:execIn",
+    return {(name, "inputs:onStep"): f"{name}.inputs:execIn", (name, "outputs:Closed"): f"{name}.outputs:isClosed",
             (name, "inputs:Close"): f"{command}.inputs:Close", (name, "inputs:Open"): f"{command}.inputs:Open"}
 
 

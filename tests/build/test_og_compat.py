@@ -3,6 +3,7 @@ graphflow ships, and what they build passes its checks."""
 import importlib.util
 import itertools
 import json
+import math
 import shutil
 
 import pytest
@@ -228,3 +229,42 @@ def test_a_generic_subscribers_field_output_is_read_from_its_message_as_kits_fie
     harness = GraphHarness(graph.document)
     harness.run(1)
     assert harness.instance.variables["pan"] == 0.0
+
+
+def test_an_isaac_4_surface_gripper_script_maps_as_the_importer_maps_a_v1_node():
+    """omni.isaac.surface_gripper.SurfaceGripper only ever named v1: its inputs go to graphflow.LegacySurfaceGripper
+    (BendAngle degrees -> radians), Close/Open to a current gripper node commanding it, outputs:Closed is isClosed."""
+    keys, path = og.Controller.Keys, next(_paths)
+    with pytest.warns(og.OgCompatWarning):
+        graph, *_ = og.Controller.edit(path, {
+            keys.CREATE_NODES: [("tick", "omni.graph.action.OnPlaybackTick"),
+                                ("close", "omni.graph.action.OnImpulseEvent"),
+                                ("gripper", "omni.isaac.surface_gripper.SurfaceGripper"),
+                                ("closed", "omni.graph.nodes.ToString")],
+            keys.CONNECT: [("tick.outputs:tick", "gripper.inputs:onStep"), ("close.outputs:execOut", "gripper.inputs:Close"),
+                           ("gripper.outputs:Closed", "closed.inputs:value")],
+            keys.SET_VALUES: [("gripper.inputs:ParentRigidBody", "/World/Tool"), ("gripper.inputs:BendAngle", 90.0),
+                              ("gripper.inputs:GripThreshold", 0.02)]})
+    assert graph.document.node("gripper").type == "graphflow.LegacySurfaceGripper"
+    assert graph.document.node("gripper").inputs == {"endEffectorPrim": ["/World/Tool"],
+                                                     "bendAngle": pytest.approx(math.pi / 2), "gripThreshold": 0.02}
+    assert {(c.src, c.dst) for c in graph.document.connections} == {
+        ("tick.outputs:tick", "gripper.inputs:execIn"), ("close.outputs:execOut", "gripper_command.inputs:Close"),
+        ("gripper.outputs:gripperPrim", "gripper_command.inputs:SurfaceGripper"),
+        ("gripper.outputs:isClosed", "closed.inputs:value")}
+
+
+def test_a_generic_publishers_field_values_gather_into_message_fields_and_field_wires_drop_with_a_line():
+    keys, path = og.Controller.Keys, next(_paths)
+    with pytest.warns(og.OgCompatWarning) as lines:
+        graph, *_ = og.Controller.edit(path, {
+            keys.CREATE_NODES: [("time", "omni.isaac.core_nodes.IsaacReadSimulationTime"),
+                                ("pub", "omni.isaac.ros2_bridge.ROS2Publisher")],
+            keys.CONNECT: [("time.outputs:simulationTime", "pub.inputs:header:stamp:sec")],
+            keys.SET_VALUES: [("pub.inputs:messagePackage", "sensor_msgs"), ("pub.inputs:messageName", "JointState"),
+                              ("pub.inputs:name", ["finger"]), ("pub.inputs:position", [0.5])]})
+        og.Controller.set(f"{path}/pub.inputs:header:frame_id", "gripper")
+    assert json.loads(graph.document.node("pub").inputs["messageFields"]) == {
+        "name": ["finger"], "position": [0.5], "header:frame_id": "gripper"}
+    assert graph.document.connections == ()
+    assert "input 'inputs:header:stamp:sec': connection from time.outputs:simulationTime dropped" in str(lines[0].message)

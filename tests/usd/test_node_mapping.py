@@ -146,3 +146,26 @@ def test_a_generic_subscribers_field_output_is_read_from_its_message_by_a_messag
         ("speed_sub_data.outputs:value", "show.inputs:value")}
     assert any("output 'outputs:data': Kit's per-field output read from outputs:message by node 'speed_sub_data'"
                in line for line in result.warnings)
+
+
+def test_v1_surface_gripper_closed_output_is_the_legacy_grippers_is_closed(tmp_path):
+    """v1's outputs:Closed ("Surface gripper is closed or not", the 4.x .ogn) reads LegacySurfaceGripper.isClosed."""
+    result = _import(tmp_path, '''
+        def OmniGraphNode "gripper"
+        {
+            token node:type = "omni.isaac.surface_gripper.SurfaceGripper"
+            int node:typeVersion = 1
+            custom rel inputs:ParentRigidBody = </World/Tool>
+            custom uint inputs:onStep
+            prepend uint inputs:onStep.connect = </World/ActionGraph/on_tick.outputs:tick>
+            custom bool outputs:Closed
+        }
+        def OmniGraphNode "show"
+        {
+            token node:type = "omni.graph.nodes.ToString"
+            int node:typeVersion = 1
+            custom token inputs:value
+            prepend token inputs:value.connect = </World/ActionGraph/gripper.outputs:Closed>
+        }
+''')
+    assert ("gripper.outputs:isClosed", "show.inputs:value") in {(c.src, c.dst) for c in result.document.connections}
