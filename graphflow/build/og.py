@@ -13,7 +13,10 @@ order (deletions, variables, nodes, attributes, connections, disconnections, val
 once. What the importer of ``.usda`` graphs degrades, this degrades the same way, with one warning line
 (``OgCompatWarning``) each: renderer and GUI node types are dropped with their connections and values, an
 evaluator other than ``execution`` or an on-demand pipeline stage builds an action graph evaluated every tick,
-and a connection from a constant's ``inputs:value`` reads its output, as Kit lets it.
+a connection from a constant's ``inputs:value`` reads its output, as Kit lets it, a generic subscriber's
+per-field output is read from its message (``graphflow.ROS2MessageField``) and a generic publisher's per-field
+values gather into ``messageFields``, Isaac 4.x's Surface Gripper maps as on import (``og_legacy``), and inputs
+Isaac removed since 4.x (``REMOVED_INPUTS``) are dropped.
 """
 from __future__ import annotations
 
