@@ -25,6 +25,8 @@ import warnings
 import weakref
 from typing import Any
 
+from pxr import Sdf
+
 from graphflow.build import og_legacy
 from graphflow.build.graph import Graph, NodeHandle, Port
 from graphflow.errors import BadInput
@@ -97,6 +99,10 @@ REMOVED_INPUTS = {
                    "else targetPrim"},
 }
 
+# ``graphflow import --skip-unknown`` for scripts: set ``og.skip_unknown = True`` after the import and node types
+# graphflow lacks are left out with one line each (their connections and values too) instead of refused
+skip_unknown = False
+
 _graphs: dict[str, Graph] = {}
 _dropped: "weakref.WeakKeyDictionary[Graph, set[str]]" = weakref.WeakKeyDictionary()   # renderer nodes left out
 _legacy: "weakref.WeakKeyDictionary[Graph, set[str]]" = weakref.WeakKeyDictionary()    # Isaac 4.x grippers (v1)
@@ -137,7 +143,7 @@ class Controller:
         values = _current(graph, _kept(graph, [(target, value) for target, value, *_type
                                                in _pairs(commands.get(Keys.SET_VALUES), width=None)], ports=1))
         if values:
-            graph.set_many(_legacy_values(graph, {_port(target): value for target, value in values}))
+            graph.set_many(_legacy_values(graph, _absolute(graph, {_port(target): value for target, value in values})))
         lookup = {node.name: node for node in created}
         return graph, created, [], lookup
 
@@ -159,7 +165,7 @@ class Controller:
         """``og.Controller.set(attribute, value)``: author an input of a graph an earlier edit made."""
         graph, port = _graph_and_port(attribute)
         if _current(graph, _kept(graph, [(port, value)], ports=1)):
-            graph.set_many(_legacy_values(graph, {port: value}))
+            graph.set_many(_legacy_values(graph, _absolute(graph, {port: value})))
 
     @classmethod
     def connect(cls, src: Any, dst: Any, **_options) -> None:
@@ -214,10 +220,15 @@ def _warn(line: str) -> None:
 
 
 def _create(graph: Graph, name: str, type_id: str) -> NodeHandle | None:
-    """The node, or None for a renderer/GUI type, dropped with one line as the importer drops it."""
-    if type_id in RENDERING_NODES:
+    """The node, or None for a renderer/GUI type (or, with ``skip_unknown``, a type graphflow lacks), dropped with
+    one line as the importer drops it."""
+    reason = RENDERING_NODES.get(type_id)
+    if reason is None and skip_unknown and graph.registry.get(type_id) is None and type_id != og_legacy.V1_ID:
+        hint = graph.registry.suggest(type_id)
+        reason = "unknown node type" + (f" (did you mean {hint!r}?)" if hint else "") + "; skipped (og.skip_unknown)"
+    if reason is not None:
         _dropped.setdefault(graph, set()).add(name)
-        _warn(f"node '{name}' ({type_id}): dropped with its connections and values: {RENDERING_NODES[type_id]}")
+        _warn(f"node '{name}' ({type_id}): dropped with its connections and values: {reason}")
         return None
     if type_id == og_legacy.V1_ID:
         _legacy.setdefault(graph, set()).add(name)
@@ -254,6 +265,24 @@ def _wired(graph: Graph, pairs: list) -> list:
             _warn(f"node '{field[0]}' input 'inputs:{field[1]}': connection from {_port(src)} dropped: graphflow's "
                   f"publisher takes its message fields as values ('inputs:{MESSAGE_FIELDS}'), not connections")
     return kept
+
+
+def _absolute(graph: Graph, values: dict) -> dict:
+    """*values* with relative target paths ("../..") made absolute against the node's prim, as USD resolves a
+    relationship's targets and Kit the node's (the node's prim is ``<graph path>/<node name>``)."""
+    graph_path = next((path for path, made in _graphs.items() if made is graph), "")
+    resolved = {}
+    for target, value in values.items():
+        node = _node_of(graph, target)
+        spec = _spec_of(graph, node)
+        attribute = spec.attribute("inputs:" + str(target).rsplit(".inputs:", 1)[-1]) if spec is not None else None
+        paths = [value] if isinstance(value, str) else value
+        if (attribute is not None and attribute.type == "target" and graph_path and isinstance(paths, (list, tuple))
+                and any(isinstance(path, str) and path and not path.startswith("/") for path in paths)):
+            anchor = Sdf.Path(f"{graph_path}/{node}")
+            value = [str(Sdf.Path(str(path)).MakeAbsolutePath(anchor)) for path in paths]
+        resolved[target] = value
+    return resolved
 
 
 def _legacy_values(graph: Graph, values: dict) -> dict:

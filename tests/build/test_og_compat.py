@@ -268,3 +268,32 @@ def test_a_generic_publishers_field_values_gather_into_message_fields_and_field_
         "name": ["finger"], "position": [0.5], "header:frame_id": "gripper"}
     assert graph.document.connections == ()
     assert "input 'inputs:header:stamp:sec': connection from time.outputs:simulationTime dropped" in str(lines[0].message)
+
+
+def test_skip_unknown_leaves_out_types_graphflow_lacks_with_one_line_as_import_does(monkeypatch):
+    keys, path = og.Controller.Keys, next(_paths)
+    commands = {keys.CREATE_NODES: [("tick", "omni.graph.action.OnPlaybackTick"),
+                                    ("px4", "pegasus.simulator.PegasusMultirotorPX4Node"),
+                                    ("clock", "isaacsim.ros2.bridge.ROS2PublishClock")],
+                keys.CONNECT: [("tick.outputs:tick", "px4.inputs:execIn"), ("tick.outputs:tick", "clock.inputs:execIn")],
+                keys.SET_VALUES: [("px4.inputs:numRotors", 4)]}
+    with pytest.raises(GraphError, match="node 'px4': unknown node type 'pegasus.simulator.PegasusMultirotorPX4Node'"):
+        og.Controller.edit(path, commands)
+    monkeypatch.setattr(og, "skip_unknown", True)
+    with pytest.warns(og.OgCompatWarning, match="node 'px4' .*unknown node type; skipped"):
+        graph, nodes, _, _ = og.Controller.edit(next(_paths), commands)
+    assert [node.name for node in nodes] == ["tick", "clock"]
+    assert [(c.src, c.dst) for c in graph.document.connections] == [("tick.outputs:tick", "clock.inputs:execIn")]
+
+
+def test_a_relative_target_path_resolves_against_the_nodes_prim_as_usd_resolves_relationship_targets():
+    """Scripts target the prim holding the graph with "../.." from the node (graph /World/quad/Graph, node prim
+    /World/quad/Graph/where: ".." is the graph, "../.." the prim holding it)."""
+    keys = og.Controller.Keys
+    graph, *_ = og.Controller.edit("/World/quad/Graph", {
+        keys.CREATE_NODES: [("where", "omni.graph.nodes.GetPrimPath")],
+        keys.SET_VALUES: [("where.inputs:prim", "../..")]})
+    og.Controller.set("/World/quad/Graph/where.inputs:prim", ["../../Rotor"])
+    assert graph.document.node("where").inputs == {"prim": ["/World/quad/Rotor"]}
+    og.Controller.edit(graph, {keys.SET_VALUES: [("where.inputs:prim", "../..")]})
+    assert graph.document.node("where").inputs == {"prim": ["/World/quad"]}
