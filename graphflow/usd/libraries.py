@@ -160,7 +160,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ROS2SubscribeTwist": None, "ROS2Subscriber": None}),
     "isaacsim.robot.wheeled_robots": _ids(_WHEELED, {
         "AckermannController": None, "CheckGoal2D": None, "DifferentialController": None, "HolonomicController": None,
-        "HolonomicRobotUsdSetup": EDITOR, "QuinticPathPlanner": None,
+        "HolonomicRobotUsdSetup": None, "QuinticPathPlanner": None,
         "StanleyControlPID": None}),
     "isaacsim.sensors.physics": _ids(_SENSORS, {
         "IsaacReadContactSensor": None, "IsaacReadEffortSensor": None, "IsaacReadIMU": None,

@@ -61,7 +61,8 @@ STAGE_INPUTS = {
 }
 
 # types whose prim the packaged stage lacks: on it they must refuse clearly, naming the prim
-OWN_PRIM = {"isaacsim.sensors.physics.IsaacReadRaycastSensor": ({"raycastSensorPrim": CUBE}, "rayOrigins")}
+OWN_PRIM = {"isaacsim.sensors.physics.IsaacReadRaycastSensor": ({"raycastSensorPrim": CUBE}, "rayOrigins"),
+            "isaacsim.robot.wheeled_robots.HolonomicRobotUsdSetup": ({"robotPrim": UR10}, "isaacmecanumwheel:angle")}
 
 TYPES = default_registry().types()
 # constants holding paths and path conversions pass them on without reading the scene
