@@ -133,6 +133,11 @@ class NodeDatabase:
         return self._index in self._instance._latent
 
     @property
+    def base_dir(self):
+        """The graph file's folder: files a node names relative to the graph are found from here."""
+        return self._instance.compiled.document.base_dir
+
+    @property
     def connected_exec_outputs(self) -> frozenset[str]:
         """Exec outputs wired to something: Kit nodes whose output count is dynamic (Multigate) count these."""
         node = self._instance.compiled.nodes[self._index]

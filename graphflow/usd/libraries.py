@@ -16,11 +16,12 @@ from graphflow.usd.node_mapping import RENDERING_NODES
 
 MOUSE = ("graphflow scripts the keyboard and gamepad (--keys, --pad) but has no mouse service yet; headless "
          "it would never fire")
-HOST = "reads the host machine (environment, files, wall clock): not reproducible, so not carried over"
+REAL_TIME_FACTOR = ("its one output is simulated time over wall-clock time, which differs from run to run and "
+                    "machine to machine; graphflow traces are bit-identical for the same inputs and seed, so a "
+                    "wall-clock reading is not carried into a graph")
 PRIM_SERVICES = ("serves Isaac's own isaac_ros2_messages service types (prim list, attribute read/write), "
                  "defined in Isaac's ROS workspace, not among graphflow's service types yet")
 TEST_ONLY = "Isaac's internal test node"
-EDITOR = "sets up a robot in the editor, not at run time"
 TF_DRIVEN = ("places prims at the poses /tf carries by switching off their articulations, joints and rigid "
              "bodies, which graphflow's world cannot do while running")
 PRIM_EDIT = "changes the stage's prims while running, which graphflow's world does not do"
@@ -138,10 +139,10 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "IsaacConvertDepthToPointCloud": None, "IsaacConvertRGBAToRGB": None, "IsaacCreateRenderProduct": None,
         "IsaacCreateViewport": None, "IsaacGenerate32FC1": None, "IsaacGenerateRGBA": None,
         "IsaacGetViewportRenderProduct": None, "IsaacJointNameResolver": None,
-        "IsaacPassthroughImagePtr": None, "IsaacReadCameraInfo": None, "IsaacReadEnvVar": HOST,
-        "IsaacReadFilePath": HOST, "IsaacReadSimulationTime": None, "IsaacReadSimulationTimeAnnotator": None,
+        "IsaacPassthroughImagePtr": None, "IsaacReadCameraInfo": None, "IsaacReadEnvVar": None,
+        "IsaacReadFilePath": None, "IsaacReadSimulationTime": None, "IsaacReadSimulationTimeAnnotator": None,
         "IsaacReadSystemTime": None, "IsaacReadSystemTimeAnnotator": None, "IsaacReadTimes": None, "IsaacReadWorldPose": None,
-        "IsaacRealTimeFactor": HOST, "IsaacSetCameraOnRenderProduct": None, "IsaacSetViewportResolution": None,
+        "IsaacRealTimeFactor": REAL_TIME_FACTOR, "IsaacSetCameraOnRenderProduct": None, "IsaacSetViewportResolution": None,
         "IsaacSimulationGate": None, "IsaacTestNode": TEST_ONLY, "IsaacTimeSplitter": None,
         "OgnIsaacRunOneSimulationFrame": None, "OgnIsaacScaleToFromStageUnit": None, "OnPhysicsStep": None}),
     "isaacsim.ros2.bridge / isaacsim.ros2.nodes": _ids(_ROS2, {
