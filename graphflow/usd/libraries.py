@@ -38,11 +38,6 @@ MATERIALS = "reads or binds render materials, which only Kit's renderer uses"
 MANEUVER = ("animates a prim's xform ops over several ticks as an editor animation; graphflow's bodies move by "
             "physics (WritePrimLocalTransform places a free body)")
 GRAPH_VALUES = "reads any node's attribute by path through Kit's runtime store; graphflow graphs read outputs through connections"
-APPEND_ARRAY = "its input ports are not on Kit's reference pages this project could read; not carried over yet"
-LOOK_AT = ("Kit's reference does not say whether its matrix is the eye's world transform or the view "
-           "(world-to-eye) matrix, its inverse")
-GAUSSIAN = "its standard-deviation port is not on Kit's reference pages this project could read"
-NTH_ROOT = "its output port is not on Kit's reference pages this project could read"
 NOISE = "Kit's reference pages do not state its noise function, so values would not match Kit's"
 
 _ISAAC_CORE = "isaacsim.core.nodes"
@@ -67,7 +62,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "SendMessageBusEvent": None, "Sequence": None, "SetPrimActive": PRIM_EDIT, "SwitchToken": None,
         "SyncGate": None}),
     "omni.graph.nodes": _ids("omni.graph.nodes", {
-        "Absolute": None, "Acos": None, "Add": None, "AnyZero": None, "AppendArray": APPEND_ARRAY, "AppendPath": None,
+        "Absolute": None, "Acos": None, "Add": None, "AnyZero": None, "AppendArray": None, "AppendPath": None,
         "AppendString": None, "AppendTargetPaths": None, "AppendTargets": None, "ArrayAppendValue": None,
         "ArrayFill": None, "ArrayFindValue": None, "ArrayGetSize": None, "ArrayIndex": None, "ArrayInsertValue": None,
         "ArrayLength": BUNDLES, "ArrayRemoveIndex": None, "ArrayRemoveValue": None, "ArrayReplaceValue": None,
@@ -111,10 +106,10 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "LengthAlongCurve": GEOMETRY, "LoopTimeline": TIMELINE, "Magnitude": None,
         "MakeArray": "Kit's older Python array maker, replaced by ConstructArray; not carried over",
         "MakeMatrix2": None, "MakeMatrix3": None, "MakeMatrix4": None, "MakeTransform": None,
-        "MakeTransformLookAt": LOOK_AT, "MakeVector2": None, "MakeVector3": None, "MakeVector4": None,
+        "MakeTransformLookAt": None, "MakeVector2": None, "MakeVector3": None, "MakeVector4": None,
         "MatrixMultiply": None, "Maximum": None, "Minimum": None, "Modulo": None, "MoveToTarget": MANEUVER,
         "MoveToTransform": MANEUVER, "Multiply": None, "Negate": None, "Noise": NOISE, "Normalize": None,
-        "NthRoot": NTH_ROOT, "RandomBoolean": None, "RandomGaussian": GAUSSIAN, "RandomUnitQuaternion": None,
+        "NthRoot": None, "RandomBoolean": None, "RandomGaussian": None, "RandomUnitQuaternion": None,
         "RandomUnitVector": None, "ReadGamepadState": None, "ReadKeyboardState": None,
         "ReadOmniGraphValue": GRAPH_VALUES, "ReadPrim": BUNDLES, "ReadPrimAttribute": None,
         "ReadPrimAttributes": BUNDLES, "ReadPrimBundle": BUNDLES, "ReadPrimLocalTransform": None,
