@@ -14,8 +14,6 @@ from dataclasses import dataclass
 
 from graphflow.usd.node_mapping import RENDERING_NODES
 
-MOUSE = ("graphflow scripts the keyboard and gamepad (--keys, --pad) but has no mouse service yet; headless "
-         "it would never fire")
 REAL_TIME_FACTOR = ("its one output is simulated time over wall-clock time, which differs from run to run and "
                     "machine to machine; graphflow traces are bit-identical for the same inputs and seed, so a "
                     "wall-clock reading is not carried into a graph")
@@ -56,7 +54,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ExitApplication": None, "FlipFlop": None, "ForEach": None, "ForEachTarget": None, "ForLoop": None,
         "Gate": None, "Multigate": None, "Multisequence": None, "OnClosing": None, "OnCustomEvent": None,
         "OnGamepadInput": None, "OnImpulseEvent": None, "OnKeyboardInput": None, "OnLoaded": None,
-        "OnMessageBusEvent": None, "OnMouseInput": MOUSE,
+        "OnMessageBusEvent": None, "OnMouseInput": None,
         "OnObjectChange": None, "OnPlaybackTick": None, "OnStageEvent": None, "OnTick": None,
         "OnVariableChange": None, "Once": None, "RationalTimeSyncGate": None, "SendCustomEvent": None,
         "SendMessageBusEvent": None, "Sequence": None, "SetPrimActive": PRIM_EDIT, "SwitchToken": None,
@@ -110,7 +108,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "MatrixMultiply": None, "Maximum": None, "Minimum": None, "Modulo": None, "MoveToTarget": MANEUVER,
         "MoveToTransform": MANEUVER, "Multiply": None, "Negate": None, "Noise": NOISE, "Normalize": None,
         "NthRoot": None, "RandomBoolean": None, "RandomGaussian": None, "RandomUnitQuaternion": None,
-        "RandomUnitVector": None, "ReadGamepadState": None, "ReadKeyboardState": None,
+        "RandomUnitVector": None, "ReadGamepadState": None, "ReadKeyboardState": None, "ReadMouseState": None,
         "ReadOmniGraphValue": GRAPH_VALUES, "ReadPrim": BUNDLES, "ReadPrimAttribute": None,
         "ReadPrimAttributes": BUNDLES, "ReadPrimBundle": BUNDLES, "ReadPrimLocalTransform": None,
         "ReadPrimMaterial": MATERIALS, "ReadPrimRelationship": None, "ReadPrims": BUNDLES, "ReadPrimsBundle": BUNDLES,
