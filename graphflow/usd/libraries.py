@@ -20,8 +20,6 @@ REAL_TIME_FACTOR = ("its one output is simulated time over wall-clock time, whic
 PRIM_SERVICES = ("serves Isaac's own isaac_ros2_messages service types (prim list, attribute read/write), "
                  "defined in Isaac's ROS workspace, not among graphflow's service types yet")
 TEST_ONLY = "Isaac's internal test node"
-TF_DRIVEN = ("places prims at the poses /tf carries by switching off their articulations, joints and rigid "
-             "bodies, which graphflow's world cannot do while running")
 PRIM_EDIT = "changes the stage's prims while running, which graphflow's world does not do"
 BUNDLES = "works on Kit attribute bundles, which graphflow does not have"
 GRAPH_TARGETS = "a numeric id of the graph target (Kit's internal prim handle); GraphTarget gives its path"
@@ -150,7 +148,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ROS2Publisher": None, "ROS2QoSProfile": None, "ROS2RtxLidarHelper": None,
         "ROS2RtxLidarPointCloudConfig": None, "ROS2RtxRadarHelper": None, "ROS2ServicePrim": PRIM_SERVICES,
         "ROS2SubscribeAckermannDrive": None,
-        "ROS2SubscribeClock": None, "ROS2SubscribeJointState": None, "ROS2SubscribeTransformTree": TF_DRIVEN,
+        "ROS2SubscribeClock": None, "ROS2SubscribeJointState": None, "ROS2SubscribeTransformTree": None,
         "ROS2SubscribeTwist": None, "ROS2Subscriber": None}),
     "isaacsim.robot.wheeled_robots": _ids(_WHEELED, {
         "AckermannController": None, "CheckGoal2D": None, "DifferentialController": None, "HolonomicController": None,
