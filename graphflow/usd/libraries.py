@@ -17,8 +17,6 @@ from graphflow.usd.node_mapping import RENDERING_NODES
 REAL_TIME_FACTOR = ("its one output is simulated time over wall-clock time, which differs from run to run and "
                     "machine to machine; graphflow traces are bit-identical for the same inputs and seed, so a "
                     "wall-clock reading is not carried into a graph")
-PRIM_SERVICES = ("serves Isaac's own isaac_ros2_messages service types (prim list, attribute read/write), "
-                 "defined in Isaac's ROS workspace, not among graphflow's service types yet")
 TEST_ONLY = "Isaac's internal test node"
 PRIM_EDIT = "changes the stage's prims while running, which graphflow's world does not do"
 BUNDLES = "works on Kit attribute bundles, which graphflow does not have"
@@ -146,7 +144,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ROS2PublishObjectIdMap": None, "ROS2PublishOdometry": None, "ROS2PublishPointCloud": None,
         "ROS2PublishRawTransformTree": None, "ROS2PublishSemanticLabels": None, "ROS2PublishTransformTree": None,
         "ROS2Publisher": None, "ROS2QoSProfile": None, "ROS2RtxLidarHelper": None,
-        "ROS2RtxLidarPointCloudConfig": None, "ROS2RtxRadarHelper": None, "ROS2ServicePrim": PRIM_SERVICES,
+        "ROS2RtxLidarPointCloudConfig": None, "ROS2RtxRadarHelper": None, "ROS2ServicePrim": None,
         "ROS2SubscribeAckermannDrive": None,
         "ROS2SubscribeClock": None, "ROS2SubscribeJointState": None, "ROS2SubscribeTransformTree": None,
         "ROS2SubscribeTwist": None, "ROS2Subscriber": None}),
