@@ -53,7 +53,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "OnMessageBusEvent": None, "OnMouseInput": None,
         "OnObjectChange": None, "OnPlaybackTick": None, "OnStageEvent": None, "OnTick": None,
         "OnVariableChange": None, "Once": None, "RationalTimeSyncGate": None, "SendCustomEvent": None,
-        "SendMessageBusEvent": None, "Sequence": None, "SetPrimActive": PRIM_EDIT, "SwitchToken": None,
+        "SendMessageBusEvent": None, "Sequence": None, "SetPrimActive": None, "SwitchToken": None,
         "SyncGate": None}),
     "omni.graph.nodes": _ids("omni.graph.nodes", {
         "Absolute": None, "Acos": None, "Add": None, "AnyZero": None, "AppendArray": None, "AppendPath": None,
