@@ -142,3 +142,23 @@ def test_cli_mouse_file_click_flags_and_the_scenario(tmp_path, capsys):
     assert capsys.readouterr().out.splitlines() == ["clicked"]
     assert main(["run", str(graph), "--click", "Left Button@1"]) == 2
     assert "expected ELEMENT=VALUE@TIME" in capsys.readouterr().err
+
+
+def test_a_scenario_table_case_scripts_the_mouse(tmp_path, capsys):
+    from graphflow.cli import main
+
+    graph = {"format": "graphflow", "formatVersion": [1, 0], "settings": {"timeStep": 0.25, "duration": 3.0},
+             "nodes": [{"name": "click", "type": ON_MOUSE}, {"name": "stop", "type": "graphflow.StopRun"}],
+             "connections": [{"src": "click.outputs:pressed", "dst": "stop.inputs:execIn"}],
+             "checks": [{"check": "stopsBy", "time": 1.0}]}
+    (tmp_path / "click.json").write_text(json.dumps(graph))
+    table = tmp_path / "table.json"
+    table.write_text(json.dumps({"format": "graphflow-cases", "formatVersion": [1, 0], "graph": "click.json", "cases": [
+        {"name": "clicked", "mouse": ["Left Button=1@0.5"]},
+        {"name": "too late", "mouse": ["Left Button=1@2"], "expect": {"fail": "stops by itself"}},
+        {"name": "wrongly expected", "mouse": ["Left Button=1@2"]}]}))
+    assert main(["test", str(table), "-j", "1"]) == 1
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[0].startswith(f"PASS {table}::clicked") and lines[1].startswith(f"XFAIL {table}::too late")
+    rerun = next(line.strip() for line in lines if line.strip().startswith("re-run:"))
+    assert rerun == f"re-run: graphflow run {tmp_path / 'click.json'} --click 'Left Button=1@2'"
