@@ -19,7 +19,7 @@ from typing import Callable
 
 from graphflow.document import load_document
 from graphflow.errors import BadInput, GraphflowError
-from graphflow.studio.browser_input import BrowserKeys, BrowserPad
+from graphflow.studio.browser_input import BrowserKeys, BrowserMouse, BrowserPad
 from graphflow.studio.frame_scene import FrameScene
 from graphflow.studio.frames import FrameSampler
 from graphflow.studio.replay import LiveInputs, save_replayed
@@ -33,7 +33,7 @@ class LiveRun:
 
     def __init__(self, path: Path, publish: Callable[[dict], None]):
         self.path, self.publish = path, publish
-        self.keys, self.pad = BrowserKeys(), BrowserPad()
+        self.keys, self.pad, self.mouse = BrowserKeys(), BrowserPad(), BrowserMouse()
         self._commands: queue.Queue = queue.Queue()
         self._thread = threading.Thread(target=self._main, name=f"graphflow-live-{path.name}", daemon=True)
         self.playing, self.speed = False, 1.0   # speed None: as fast as it goes
@@ -69,7 +69,7 @@ class LiveRun:
         document = load_document(self.path)
         scripted = ScriptedInputs.of_document(document)
         self.checked = CheckedRun(document, source=str(self.path),
-                                  inputs=replace(scripted, keys=self.keys, pad=self.pad))
+                                  inputs=replace(scripted, keys=self.keys, pad=self.pad, mouse=self.mouse))
         self.checked.preflight()
         self.simulation = self.checked.start()
         self.sampler = FrameSampler(self.simulation)
@@ -171,11 +171,13 @@ class LiveRun:
         self.checked.close()
         self.keys.rewind()
         self.pad.rewind()
+        self.mouse.rewind()
         self._load()
 
     def _save(self, name: str, path: Path) -> None:
         """The trace or report of the ticks so far, made again from the input delivered; a failure is told, the run goes on."""
-        inputs = LiveInputs(self.checked.document, str(self.path), self.keys.timeline(), self.pad.timeline())
+        inputs = LiveInputs(self.checked.document, str(self.path), self.keys.timeline(), self.pad.timeline(),
+                            self.mouse.timeline())
         try:
             save_replayed(inputs, name, path, ticks=self.simulation.tick_count, ended=self.ended is not None)
         except GraphflowError as error:   # the stage went from disk since the run started, the folder is read-only...

@@ -35,12 +35,13 @@ def generators_kept():
 
 @dataclass(frozen=True)
 class LiveInputs:
-    """What a live run was fed: the graph as loaded, and the browser's key and pad timelines so far."""
+    """What a live run was fed: the graph as loaded, and the browser's key, pad and mouse timelines so far."""
 
     document: GraphDocument
     source: str
     keys: object   # graphflow.inputs.keyboard.ScriptedKeys
     pad: object    # graphflow.inputs.gamepad.ScriptedPad
+    mouse: object = None   # graphflow.inputs.mouse.ScriptedMouse
 
 
 def save_replayed(inputs: LiveInputs, what: str, path: Path, *, ticks: int, ended: bool) -> None:
@@ -51,7 +52,7 @@ def save_replayed(inputs: LiveInputs, what: str, path: Path, *, ticks: int, ende
     from graphflow.verdicts.checked_run import CheckedRun, ScriptedInputs
 
     document = inputs.document
-    scripted = replace(ScriptedInputs.of_document(document), keys=inputs.keys, pad=inputs.pad)
+    scripted = replace(ScriptedInputs.of_document(document), keys=inputs.keys, pad=inputs.pad, mouse=inputs.mouse)
     checked = CheckedRun(document, source=inputs.source, inputs=scripted)
     with contextlib.ExitStack() as closing:
         closing.enter_context(generators_kept())
