@@ -29,8 +29,10 @@ SPEC = NodeSpec(
     categories=("isaacWheeledRobots",),
     ui_name="Usd Setup Holonomic Robot",
     inputs=(
-        Attribute("robotPrim", "target", description="The robot's articulation root prim"),
-        Attribute("comPrim", "target", description="The centre-of-mass frame prim (default: the robot prim)"),
+        Attribute("robotPrim", "target", optional=True,
+                  description="The robot's articulation root prim (when usePath is false)"),
+        Attribute("comPrim", "target", optional=True,
+                  description="The centre-of-mass frame prim (default: the robot prim)"),
         Attribute("usePath", "bool", default=False, description="Read robotPrimPath and comPrimPath instead"),
         Attribute("robotPrimPath", "token", default="", description="The robot prim's path (when usePath)"),
         Attribute("comPrimPath", "token", default="", description="The centre-of-mass prim's path (when usePath)"),

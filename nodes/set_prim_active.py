@@ -26,7 +26,7 @@ SPEC = NodeSpec(
         Attribute("active", "bool", default=False, description="Whether to set the prim active or not"),
         Attribute("execIn", "execution", description="Set the prim's activity"),
         Attribute("prim", "path", default="", description="The prim to be (de)activated (when primTarget is unset)"),
-        Attribute("primTarget", "target", description="The prim to be (de)activated"),
+        Attribute("primTarget", "target", optional=True, description="The prim to be (de)activated"),
     ),
     outputs=(
         Attribute("execOut", "execution", description="Fires after the prim was (de)activated"),
