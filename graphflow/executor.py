@@ -20,6 +20,7 @@ from __future__ import annotations
 import logging
 from collections import Counter, deque
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any, Callable, Iterable, NoReturn
 
 from graphflow.compiled import CompiledGraph, CompiledNode
@@ -133,7 +134,7 @@ class NodeDatabase:
         return self._index in self._instance._latent
 
     @property
-    def base_dir(self):
+    def base_dir(self) -> Path:
         """The graph file's folder: files a node names relative to the graph are found from here."""
         return self._instance.compiled.document.base_dir
 
