@@ -64,6 +64,13 @@ class Body:
     linear_damping: float = 0.0             # PhysX defaults
     angular_damping: float = 0.05
 
+    @property
+    def mass_properties(self) -> MassProperties:
+        """The mass properties of a dynamic or kinematic body; the import gives every one of them some."""
+        if self.mass is None:
+            raise ValueError(f"{self.path} is a static collider: it has no mass")
+        return self.mass
+
 
 @dataclass(frozen=True)
 class Drive:
