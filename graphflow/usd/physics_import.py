@@ -21,6 +21,7 @@ import math
 import os
 import warnings
 from pathlib import Path
+from typing import TypedDict
 
 from graphflow.messages import usd_message
 from graphflow.poses import (
@@ -115,7 +116,18 @@ def _finite_or_inf(value: float) -> float:
     return float("inf") if not math.isfinite(value) or abs(value) >= 3.0e38 else value
 
 
+class _ShapeCommon(TypedDict):
+    """What every kind of collider shape has."""
+
+    path: str
+    pose: Pose
+    material: Material
+    collision_enabled: bool
+
+
 class _Importer(MassPropertiesMixin):
+    description: StageDescription          # made by run(), which every other method serves
+
     def __init__(self, stage, label: str):
         from pxr import UsdGeom
 
@@ -124,7 +136,6 @@ class _Importer(MassPropertiesMixin):
         self.mpu = float(UsdGeom.GetStageMetersPerUnit(stage))
         self.up_axis = str(UsdGeom.GetStageUpAxis(stage))
         self.xform_cache = UsdGeom.XformCache()
-        self.description: StageDescription | None = None
 
     # -- helpers -----------------------------------------------------------------
     def _fail(self, message: str):
@@ -294,7 +305,7 @@ class _Importer(MassPropertiesMixin):
         path = str(desc.primPath)
         pose = (self._vec(desc.localPos), quat_of(desc.localRot))
         material = self.materials.get(str(desc.materials[0]), Material()) if len(desc.materials) else Material()
-        common = dict(path=path, pose=pose, material=material, collision_enabled=bool(desc.collisionEnabled))
+        common = _ShapeCommon(path=path, pose=pose, material=material, collision_enabled=bool(desc.collisionEnabled))
         if kind == "box":
             return Shape(kind="box", half_extents=self._vec(desc.halfExtents), **common)
         if kind == "sphere":
@@ -309,7 +320,7 @@ class _Importer(MassPropertiesMixin):
             return Shape(kind="plane", axis=_enum_name(desc.axis), **common)
         return self._mesh_shape(desc, body_path, common)
 
-    def _mesh_shape(self, desc, body_path, common) -> Shape | None:
+    def _mesh_shape(self, desc, body_path: str | None, common: _ShapeCommon) -> Shape | None:
         from pxr import UsdGeom
 
         path = common["path"]
@@ -325,7 +336,8 @@ class _Importer(MassPropertiesMixin):
         if body_path is None and approximation in ("none", ""):
             counts = mesh.GetFaceVertexCountsAttr().Get() or []
             indices = mesh.GetFaceVertexIndicesAttr().Get() or []
-            triangles, cursor = [], 0
+            triangles: list[tuple[int, int, int]] = []
+            cursor = 0
             for count in counts:
                 face = indices[cursor:cursor + count]
                 cursor += count
