@@ -18,7 +18,6 @@ import networkx as nx
 from graphflow.document import GraphDocument
 from graphflow.model import Connection
 from graphflow.registry import Registry, default_registry
-from graphflow.spec import NodeSpec
 
 FORMATS = ("svg", "png", "mermaid", "dot")
 SUFFIX_FORMATS = {".svg": "svg", ".png": "png", ".mmd": "mermaid", ".mermaid": "mermaid", ".dot": "dot", ".gv": "dot"}
@@ -143,12 +142,13 @@ def layers(document: GraphDocument, registry: Registry | None = None) -> dict[st
     (loop-closing edges are dropped), so exec chains read left to right and a
     pure node sits between what it reads and what reads it.
     """
-    specs = _specs(document, registry or default_registry())
+    specs = {node.name: (registry or default_registry()).require(node.type).spec for node in document.nodes}
     order = list(specs)
     flow = nx.DiGraph()
     flow.add_nodes_from(order)
     for connection in document.connections:
-        exec_edge = _is_execution(specs[connection.dst_node], connection.dst_attr)
+        destination = specs[connection.dst_node].attribute(connection.dst_attr)
+        exec_edge = destination is not None and destination.is_execution
         if exec_edge or specs[connection.src_node].is_pure or specs[connection.dst_node].is_pure:
             flow.add_edge(connection.src_node, connection.dst_node)
     acyclic = _without_back_edges(flow, [name for name in order if specs[name].is_event_source])
@@ -190,7 +190,7 @@ def _without_back_edges(graph: nx.DiGraph, sources: list[str]) -> nx.DiGraph:
 def layout(document: GraphDocument, registry: Registry | None = None) -> Picture:
     """Place every node and route every connection (see the module docstring for the rules)."""
     registry = registry or default_registry()
-    specs = _specs(document, registry)
+    specs = {node.name: registry.require(node.type).spec for node in document.nodes}
     column = layers(document, registry)
     connected_inputs: dict[str, list[str]] = {name: [] for name in specs}
     connected_outputs: dict[str, list[str]] = {name: [] for name in specs}
@@ -203,7 +203,8 @@ def layout(document: GraphDocument, registry: Registry | None = None) -> Picture
 
     def ordered(node: str, names: list[str], group: str) -> list[str]:
         declared = [a.name for a in getattr(specs[node], group)]
-        return sorted(names, key=lambda n: (not _is_execution(specs[node], f"{group}:{n}"),
+        execution = {a.name for a in getattr(specs[node], group) if a.is_execution}
+        return sorted(names, key=lambda n: (n not in execution,
                                             declared.index(n) if n in declared else len(declared)))
 
     sizes, contents = {}, {}
@@ -271,22 +272,6 @@ def layout(document: GraphDocument, registry: Registry | None = None) -> Picture
     title = Path(document.source).stem if document.source != "<graph>" else "graph"
     height = total_height + top_lanes + len(blocked["data"]) * LANE_GAP + 2 * MARGIN + LEGEND_HEIGHT
     return Picture(title, tuple(boxes[n.name] for n in document.nodes), tuple(edges), x - COLUMN_GAP + MARGIN, height)
-
-
-def _specs(document: GraphDocument, registry: Registry) -> dict[str, NodeSpec]:
-    """Each node's spec by node name; a checked document names known types, so a miss is a wrong registry."""
-    specs = {}
-    for node in document.nodes:
-        node_type = registry.get(node.type)
-        if node_type is None:
-            raise ValueError(f"node '{node.name}': type '{node.type}' is not in the registry it is drawn with")
-        specs[node.name] = node_type.spec
-    return specs
-
-
-def _is_execution(spec: NodeSpec, qualified_name: str) -> bool:
-    attribute = spec.attribute(qualified_name)
-    return attribute is not None and attribute.is_execution
 
 
 def _shifted(box: Box, down: float) -> Box:

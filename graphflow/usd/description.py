@@ -10,6 +10,7 @@ seconds, radians (USD's degrees are converted), quaternions (x, y, z, w).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TypedDict
 
 from graphflow.poses import AXIS_VECTORS, IDENTITY_POSE, Pose, Quat, Vec3, compose, relative, twist_angle
 
@@ -39,6 +40,15 @@ class Shape:
     triangles: tuple[tuple[int, int, int], ...] = ()  # triangle_mesh only
     material: Material = Material()
     collision_enabled: bool = True
+
+
+class ShapeCommon(TypedDict):
+    """The ``Shape`` fields every kind of collider has, as keyword arguments (the importer passes them on)."""
+
+    path: str
+    pose: Pose
+    material: Material
+    collision_enabled: bool
 
 
 @dataclass(frozen=True)

@@ -21,7 +21,6 @@ import math
 import os
 import warnings
 from pathlib import Path
-from typing import TypedDict
 
 from graphflow.messages import usd_message
 from graphflow.poses import (
@@ -44,6 +43,7 @@ from graphflow.usd.description import (
     Joint,
     Material,
     Shape,
+    ShapeCommon,
     StageDescription,
     SurfaceGripper,
     in_path_order,
@@ -114,15 +114,6 @@ def _path(sdf_path) -> str | None:
 def _finite_or_inf(value: float) -> float:
     value = float(value)
     return float("inf") if not math.isfinite(value) or abs(value) >= 3.0e38 else value
-
-
-class _ShapeCommon(TypedDict):
-    """What every kind of collider shape has."""
-
-    path: str
-    pose: Pose
-    material: Material
-    collision_enabled: bool
 
 
 class _Importer(MassPropertiesMixin):
@@ -305,7 +296,7 @@ class _Importer(MassPropertiesMixin):
         path = str(desc.primPath)
         pose = (self._vec(desc.localPos), quat_of(desc.localRot))
         material = self.materials.get(str(desc.materials[0]), Material()) if len(desc.materials) else Material()
-        common = _ShapeCommon(path=path, pose=pose, material=material, collision_enabled=bool(desc.collisionEnabled))
+        common = ShapeCommon(path=path, pose=pose, material=material, collision_enabled=bool(desc.collisionEnabled))
         if kind == "box":
             return Shape(kind="box", half_extents=self._vec(desc.halfExtents), **common)
         if kind == "sphere":
@@ -320,7 +311,7 @@ class _Importer(MassPropertiesMixin):
             return Shape(kind="plane", axis=_enum_name(desc.axis), **common)
         return self._mesh_shape(desc, body_path, common)
 
-    def _mesh_shape(self, desc, body_path: str | None, common: _ShapeCommon) -> Shape | None:
+    def _mesh_shape(self, desc, body_path: str | None, common: ShapeCommon) -> Shape | None:
         from pxr import UsdGeom
 
         path = common["path"]
