@@ -150,13 +150,15 @@ function frameCamera(camera, controls, run) {
   controls.update();
 }
 
-export default function SceneView({ run, tick, held, onReady }) {
+// live: a scene redrawn while a run plays; no multisampling then (Chromium without a GPU draws it in software,
+// where 4x antialiasing is most of a redraw's cost)
+export default function SceneView({ run, tick, held, onReady, live = false }) {
   const mount = useRef(null);
   const state = useRef(null);
 
   useEffect(() => {
     const element = mount.current;
-    const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    const renderer = new THREE.WebGLRenderer({ antialias: !live, preserveDrawingBuffer: true });
     renderer.setPixelRatio(1);
     element.appendChild(renderer.domElement);
     const camera = new THREE.PerspectiveCamera(45, 1, 0.01, 100);
