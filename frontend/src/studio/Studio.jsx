@@ -65,6 +65,14 @@ export default function Studio({ config }) {
   const inputAt = useRef(-Infinity);   // when the page last sent a key, pad or command: the frames after it are drawn at once
   const sceneReady = useCallback((built) => { scene.current = built; }, []);
   const unpin = useCallback((key) => setPinned((list) => list.filter((item) => item !== key)), []);
+  const nodes = file && file.data.nodes;
+  const selectLane = useCallback((lane) => {   // a lane's node: its own (phase, pin) or the gripper node naming its gripper
+    const naming = nodes.filter((node) => JSON.stringify(node.inputs || {}).includes(JSON.stringify(lane.gripper)));
+    const name = lane.node ?? (naming.find((node) => /gripper/i.test(node.type)) ?? naming[0])?.name;
+    if (!name) return;
+    setSelected(name);
+    setTab("node");
+  }, [nodes]);
 
   const load = useCallback(() => call(config, "GET", `/api/graph?path=${encodeURIComponent(config.file)}`).then((opened) => {
     if (opened.http !== 200) return setNotice(opened.error);
@@ -213,7 +221,8 @@ export default function Studio({ config }) {
 
   useEffect(() => {   // what a browser test drives and reads
     window.graphflowStudio = { file, problems, connect, save, startLive, send, get live() { return liveNow.get(); },
-      bodyPosition: (path) => scene.current?.bodies[path]?.group.position.toArray() ?? null };
+      bodyPosition: (path) => scene.current?.bodies[path]?.group.position.toArray() ?? null,
+      shownRays: () => scene.current?.shownClose ?? null };
     document.body.dataset.studio = file ? "ready" : "loading";
   }, [file, problems, liveNow, connect, save, startLive, send]);
 
@@ -286,7 +295,7 @@ export default function Studio({ config }) {
           {live && <LivePanel send={send} />}
         </aside>
       </div>
-      {live && <LiveScene pinned={pinned} onReady={sceneReady} onUnpin={unpin} />}
+      {live && <LiveScene pinned={pinned} onReady={sceneReady} onUnpin={unpin} onSelectLane={selectLane} />}
     </div>
     </LiveContext.Provider>
   );
