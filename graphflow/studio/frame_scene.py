@@ -14,8 +14,8 @@ from __future__ import annotations
 from typing import Any
 
 from graphflow.observe.trace import (
+    GripperSample,
     phase_outputs,
-    sample_grippers,
     surface_gripper_manager,
     to_json_value,
     used_grippers,
@@ -83,8 +83,9 @@ class FrameScene:
                     last[name] = value
                     self._gripper_changes.setdefault(path, {}).setdefault(name, []).append([count, value])
 
-    def frame(self) -> dict:
-        """``scene`` (poses of bodies that moved, grippers' force limits when first seen) and ``lanes`` since the last."""
+    def frame(self, samples: dict[str, GripperSample]) -> dict:
+        """``scene`` (poses of bodies that moved, grippers' force limits when first seen, closes' rays) and ``lanes``
+        since the last; *samples*: the grippers now (``sample_grippers``, read once a frame for this and the panel)."""
         world, tick = self.simulation.world, self.simulation.instance.tick_count
         poses = {}
         for path, read in zip(self._moving, world.body_poses(self._moving)):
@@ -94,7 +95,7 @@ class FrameScene:
                 self._poses[path] = pose
         grippers, self._gripper_changes = self._gripper_changes, {}
         limits = {}
-        for path, sample in sample_grippers(world).items():
+        for path, sample in samples.items():
             if path in self._unused:
                 continue
             for name, value in sample.fields().items():

@@ -19,6 +19,7 @@ from typing import Callable
 
 from graphflow.document import load_document
 from graphflow.errors import BadInput, GraphflowError
+from graphflow.observe.trace import sample_grippers
 from graphflow.studio.browser_input import BrowserKeys, BrowserPad
 from graphflow.studio.frame_scene import FrameScene
 from graphflow.studio.frames import FrameSampler
@@ -184,10 +185,11 @@ class LiveRun:
         self.publish({"type": "saved", "what": name, "path": path.name})
 
     def _frame(self) -> None:
-        """What changed since the last frame, sampled from the simulation as it is now."""
+        """What changed since the last frame, sampled from the simulation as it is now (the grippers read once)."""
+        grippers = sample_grippers(self.simulation.world)
         self.publish({"type": "frame", "tick": self.simulation.tick_count, "time": self.simulation.world.time,
-                      "playing": self._running(), "speed": self.speed, "ended": self.ended, **self.sampler.frame(),
-                      **self.scene.frame()})
+                      "playing": self._running(), "speed": self.speed, "ended": self.ended,
+                      **self.sampler.frame(grippers), **self.scene.frame(grippers)})
 
 
 class _Unlistened:
