@@ -93,15 +93,19 @@ class _SocketWatcher:
 
     def play(self, ticks: int) -> list[tuple[float, int]]:
         """Play at max speed until a frame at *ticks*: (arrival time, tick) of every frame."""
+        started = time.perf_counter()
         self.socket.send(json.dumps({"command": "play"}))
         while not (message := self._until("frame"))["playing"]:
-            pass   # frames sent before play was taken
-        frames = [(time.perf_counter(), message["tick"])]
+            started = time.perf_counter()   # frames sent before play was taken
+        frames = [(started, 0), (time.perf_counter(), message["tick"])]   # its first frame may have merged ticks into it
         while frames[-1][1] < ticks:
             frames.append((time.perf_counter(), self._until("frame")["tick"]))
         return frames
 
     def reset(self) -> None:
+        # paused first, as the page's watcher does: a run reset while playing plays on, and its frames would be
+        # taken for the next repeat's (a run caught between tick TICKS and its end at 1127 was)
+        self.socket.send(json.dumps({"command": "pause"}))
         self.socket.send(json.dumps({"command": "reset"}))
         self._until("start")
 
