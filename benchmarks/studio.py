@@ -13,7 +13,8 @@ other work the wall-clock ratio is noisy, so each watcher also gives cpu_ratio: 
 per tick / the studio process's (every thread) per tick during the live run, what the server side
 costs whatever else runs. With a browser: the CPU Chromium used during the drawn and undrawn runs (CPU-seconds per wall second, of this machine's
 cores), and the page's response to input while the pyramid runs live at max speed, from typing into
-the palette's search to the filtered list drawn (median and worst of a few, target under 100 ms).
+the palette's search to the filtered list drawn (median and worst of a few, target under 100 ms); and
+Chromium's cores while the page watches the pyramid play in real time for a few seconds (watching_1x).
 """
 from __future__ import annotations
 
@@ -246,6 +247,24 @@ def _input_latency(browser) -> list[float]:
         server.close()
 
 
+def _watching_cores(browser, seconds: float = 3.0) -> float:
+    """Chromium's cores while the drawn page watches the pyramid play live in real time (frames at their steady
+    rate, every panel busy): what watching costs per second, less at the mercy of other load than a wall ratio."""
+    server = _Server(PYRAMID)
+    try:
+        page = _open_live(browser, server)
+        page.select_option("[data-field=speed]", "1")
+        page.click("[data-action=play]")
+        page.wait_for_function("Number(document.querySelector('[data-testid=live-bar]').dataset.tick) > 60", timeout=120000)
+        cpu, started = _chromium_cpu_seconds(), time.perf_counter()
+        time.sleep(seconds)
+        cores = (_chromium_cpu_seconds() - cpu) / (time.perf_counter() - started)
+        page.close()
+        return cores
+    finally:
+        server.close()
+
+
 def _browser():
     try:
         from playwright.sync_api import sync_playwright
@@ -274,7 +293,8 @@ def _with_browser(found, server: _Server, ticks: int, repeats: int, figures: dic
                     visible = measured.ratio
             if PYRAMID.exists():
                 latency = _input_latency(browser)
-                figures.update(input_median=f"{statistics.median(latency):.1f}ms", input_worst=f"{max(latency):.1f}ms")
+                figures.update(input_median=f"{statistics.median(latency):.1f}ms", input_worst=f"{max(latency):.1f}ms",
+                               watching_1x=f"{_watching_cores(browser):.2f}cores")
         finally:
             browser.close()
     return visible

@@ -17,8 +17,9 @@ import "./studio.css";
 
 // While a run plays, the page draws its frames at most 10 times a second (the server sends up to 30): without a
 // GPU, Chromium composites every drawn frame in software, ~15 ms of a core each on this 2-core machine, whatever
-// changed (measured: 0.78 cores drawing 30 a second, 0.42 drawing 10). Frames after the user's input are drawn
-// at once, and so is any frame of a run not playing (paused, stepped, ended).
+// changed (measured: 0.78 cores drawing 30 a second, 0.42 drawing 10). Frames within INPUT_MS of a key or pad
+// change, the frame answering a command, and any frame of a run not playing (paused, stepped, ended) are drawn
+// at once.
 const SHOW_MS = 100;
 const INPUT_MS = 300;
 
@@ -62,7 +63,8 @@ export default function Studio({ config }) {
   pinnedNow.current = pinned;
   const view = useRef(null);                  // the live run as the scene and lanes read it (liveView.js)
   const scene = useRef(null);
-  const inputAt = useRef(-Infinity);   // when the page last sent a key, pad or command: the frames after it are drawn at once
+  const inputAt = useRef(-Infinity);   // when the page last sent a key or pad change: the frames after it are drawn at once
+  const commanded = useRef(false);     // a command was sent: the next frame (its answer) is drawn at once
   const sceneReady = useCallback((built) => { scene.current = built; }, []);
   const unpin = useCallback((key) => setPinned((list) => list.filter((item) => item !== key)), []);
   const nodes = file && file.data.nodes;
@@ -181,7 +183,8 @@ export default function Studio({ config }) {
   }, [config, file]);
 
   const send = useCallback((message) => {
-    inputAt.current = performance.now();
+    if (message.command) commanded.current = true;
+    else inputAt.current = performance.now();
     if (socket.current && socket.current.readyState === WebSocket.OPEN) socket.current.send(JSON.stringify(message));
   }, []);
 
@@ -196,7 +199,9 @@ export default function Studio({ config }) {
       const message = JSON.parse(event.data);
       if (message.type === "start") view.current = startView(message.run);
       if (message.type === "frame" && view.current) view.current = withFrame(view.current, message, pinnedNow.current);
-      const urgent = message.type !== "frame" || !message.playing || performance.now() - inputAt.current < INPUT_MS;
+      const urgent = message.type !== "frame" || !message.playing || commanded.current
+        || performance.now() - inputAt.current < INPUT_MS;
+      if (message.type === "frame") commanded.current = false;
       liveNow.set(withMessage(liveNow.get(), message, { reportPath, tracePath, view: view.current }), urgent);
     };
     ws.onclose = () => liveNow.get() && liveNow.set({ ...liveNow.get(), notice: "live run closed" });
