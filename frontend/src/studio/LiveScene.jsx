@@ -1,5 +1,5 @@
 // The live run's 3D scene and lanes: the report's SceneView and Lanes fed from the live frames.
-import React, { useCallback, useEffect, useMemo, useState } from "react";
+import React, { useCallback, useDeferredValue, useEffect, useMemo, useState } from "react";
 import SceneView from "../SceneView.jsx";
 import Lanes from "../Lanes.jsx";
 import { heldNow, worthShowing } from "./liveView.js";
@@ -41,9 +41,10 @@ function SceneAndLanes({ view, pinned, onUnpin, onReady, onSelectLane }) {
   );
 }
 
-// memo: redrawn when the view changes (at most 10 times a second while a run plays), not on every frame
+// memo: redrawn when the view changes (at most 10 times a second while a run plays), not on every frame;
+// deferred: the frame's bar, wires and highlights are drawn first, the scene and lanes (the costly part) after
 export default React.memo(function LiveScene({ pinned, onUnpin, onReady, onSelectLane }) {
-  const view = useLive((live) => live?.view);
+  const view = useDeferredValue(useLive((live) => live?.view));
   if (!view || !worthShowing(view, pinned)) return null;
   return <SceneAndLanes view={view} pinned={pinned} onUnpin={onUnpin} onReady={onReady} onSelectLane={onSelectLane} />;
 });
