@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from graphflow.poses import Pose
+from graphflow.poses import Pose, invert
 from graphflow.usd.description import Joint
 
 
@@ -23,6 +23,10 @@ class BodyHandle:
     mass: float                     # as built (the world keeps the live mass)
     gravity_enabled: bool
     articulation: str | None = None
+    prim_in_inertial: Pose = field(init=False, repr=False, compare=False)   # the inverse, for every pose read
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "prim_in_inertial", invert(self.inertial_in_prim))
 
 
 @dataclass(frozen=True)
@@ -38,8 +42,11 @@ class DriveSpec:
     upper: float = float("inf")
 
     @classmethod
-    def for_joint(cls, joint: Joint) -> "DriveSpec":
+    def for_joint(cls, joint: Joint) -> "DriveSpec | None":
+        """The joint's drive as built, None for an undriven joint."""
         drive = joint.drive
+        if drive is None:
+            return None
         return cls(drive.stiffness, drive.damping, drive.max_force, drive.acceleration, joint.max_velocity,
                    joint.lower, joint.upper)
 
