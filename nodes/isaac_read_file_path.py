@@ -11,6 +11,7 @@ empty string with a warning, as Isaac.
 """
 from pathlib import Path
 
+from graphflow.node_api import NodeDb
 from graphflow.spec import Attribute, NodeSpec
 
 SPEC = NodeSpec(
@@ -39,7 +40,7 @@ def compute(db):
     db.outputs.fileContents = db.internal[path]
 
 
-def _read(db, path: str) -> str:
+def _read(db: NodeDb, path: str) -> str:
     if not path:
         db.log("inputs:path is empty: fileContents is the empty string", "warning")
         return ""

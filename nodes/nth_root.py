@@ -32,8 +32,8 @@ SPEC = NodeSpec(
 def nth_root(value, n: int) -> float:
     """C's results for Kit's three cases: sqrt, cbrt and pow(value, 1 / n)."""
     value = float(value)
-    if n == 3:
-        return math.cbrt(value)
+    if n == 3:      # the real cube root (C's cbrt; math.cbrt needs Python 3.11)
+        return math.copysign(abs(value) ** (1.0 / 3.0), value)
     if value < 0.0:
         return math.nan
     if n == 2:
