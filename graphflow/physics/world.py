@@ -18,6 +18,7 @@ import pybullet
 from pybullet_utils.bullet_client import BulletClient
 
 from graphflow.physics import attributes
+from graphflow.physics.activity import PrimActivity
 from graphflow.physics.attachment import WorldAttachments
 from graphflow.physics.builder import SceneBuilder
 from graphflow.physics.contacts import (
@@ -130,6 +131,7 @@ class PyBulletWorld(SceneLookups):
         self._offsets: dict = {}
         self._pose_plans: dict = {}             # body_poses: paths -> which PyBullet calls answer them, last poses
         self._joint_torques: dict[str, list[float]] = {}    # the last step's TORQUE_CONTROL forces, by articulation
+        self.activity = PrimActivity(self)                # prims SetPrimActive switched off (all on after a build)
 
     @property
     def attachment_joints(self):
@@ -342,7 +344,7 @@ class PyBulletWorld(SceneLookups):
         for index in range(0, len(starts), pybullet.MAX_RAY_INTERSECTION_BATCH_SIZE):
             hits.extend(self.client.rayTestBatch(starts[index:index + pybullet.MAX_RAY_INTERSECTION_BATCH_SIZE],
                                                  ends[index:index + pybullet.MAX_RAY_INTERSECTION_BATCH_SIZE]))
-        result = []
+        result: list[RayHit | None] = []
         for body_id, link, fraction, position, normal in hits:
             if body_id < 0:
                 result.append(None)
@@ -352,7 +354,8 @@ class PyBulletWorld(SceneLookups):
         return result
 
     def gravity(self) -> tuple[float, float, float]:
-        return tuple(float(g) for g in self.description.gravity)
+        x, y, z = self.description.gravity
+        return float(x), float(y), float(z)
 
     def contacts(self, path: str) -> list[Contact]:
         handle = self._body(path)
@@ -378,6 +381,13 @@ class PyBulletWorld(SceneLookups):
     def set_gravity_enabled(self, prim_path: str, enabled: bool) -> None:
         """Switch gravity for one dynamic body (a counter-force -m g at its centre of mass each step)."""
         self.gravity_switches.switch(self._body(prim_path), enabled)
+
+    def prim_active(self, prim_path: str) -> bool:
+        return self.activity.is_active(prim_path)
+
+    def set_prim_active(self, prim_path: str, active: bool) -> None:
+        """Take the prim's free bodies out of the simulation, or back in (``graphflow.physics.activity``)."""
+        self.activity.set_active(prim_path, active)
 
 
 __all__ = ["PyBulletWorld", "RayHit", "Contact", "ATTRIBUTES"]
