@@ -367,6 +367,9 @@ class PyBulletWorld(SceneLookups):
     def set_attribute(self, prim_path: str, name: str, value) -> None:
         attributes.set_attribute(self, prim_path, name, value)
 
+    def read_prim(self, prim_path: str, bounding_box: bool = False, time: float | None = None):
+        return attributes.read_prim(self, prim_path, bounding_box, time)
+
     def set_collision_between(self, prim_a: str, prim_b: str, enabled: bool) -> None:
         a, b = self._body(prim_a), self._body(prim_b)
         self.client.setCollisionFilterPair(a.body_id, b.body_id, a.link, b.link, 1 if enabled else 0)

@@ -26,6 +26,7 @@ from graphflow.document import (
 )
 from graphflow.errors import BadInput
 from graphflow.registry import Registry, default_registry
+from graphflow.usd.bundle_ports import DYNAMIC_INPUTS, expand
 from graphflow.usd.graph_parts import (
     INSTANCE_TOKEN,
     PORT_CHANGES,
@@ -200,7 +201,11 @@ def _import_one(stage, graph_prim, label: str, registry: Registry, skip_unknown:
         position = _value(prim.GetAttribute(UI_POSITION))
         if position is not None:
             ui[name] = {"pos": [round(float(c), 3) for c in position]}
-    connections = _connections(node_prims, graph_prim.GetPath(), kept, label, warnings, renames) + extra_connections
+    bundle_nodes, bundle_connections, bundle_renames = expand(node_prims, kept, registry, _value, label, warnings)
+    nodes += bundle_nodes
+    renames.update(bundle_renames)
+    connections = (_connections(node_prims, graph_prim.GetPath(), kept, label, warnings, renames) + extra_connections
+                   + bundle_connections)
     return {"nodes": nodes, "connections": connections, "ui": ui, "missingAssets": missing_assets,
             "variables": graph_variables(graph_prim, label, _value, warnings)}
 
@@ -264,6 +269,8 @@ def _mapped_inputs(prim, node_type, label: str, warnings: list[str], problems: l
         old = {key: value for key, value in raw.items() if key in PICK_PLACE_OLD_INPUTS}
         current = _authored_inputs(prim, node_type, label, [])
         return {**current, **map_old_pick_place(old, where, warnings, problems)} if old else current
+    if spec.id in DYNAMIC_INPUTS:     # its dynamic inputs become InsertAttribute nodes (bundle_ports), named there
+        return _authored_inputs(prim, node_type, label, [])
     if spec.id in GENERIC_PUBLISHERS:
         fields = {key: value for key, value in _raw_inputs(prim).items() if spec.attribute(f"inputs:{key}") is None}
         for key in fields:
