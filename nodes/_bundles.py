@@ -43,8 +43,10 @@ def usd_time(value: float) -> float | None:
 
 
 def filtered(bundle: Bundle, patterns: str) -> Bundle:
-    """*bundle* with only the attributes *patterns* match (sourcePrimPath and sourcePrimType always kept)."""
-    return Bundle(tuple(a for a in bundle if a.name in PRIM_INTERNAL or wildcard(patterns, a.name)), bundle.children)
+    """*bundle* with only the prim attributes *patterns* match; the marks (sourcePrimPath, sourcePrimType) and
+    what the reader derives (worldMatrix, the bbox asked for) are always kept."""
+    kept = PRIM_INTERNAL + DERIVED
+    return Bundle(tuple(a for a in bundle if a.name in kept or wildcard(patterns, a.name)), bundle.children)
 
 
 def read(db, path: str, patterns: str, bounding_box: bool = False, time: float | None = None) -> Bundle:
