@@ -14,7 +14,11 @@ bundle nodes that exist:
   chain's end feeds WritePrim's ``attributes``. Kit writes only connected
   inputs of WritePrim, so an authored, unconnected one is named and dropped.
 
-Each added node is one line naming what it stands for.
+Each added node is one line naming what it stands for. Kit keeps a bundle
+connection as a relationship on the input, targeting the source node's output
+bundle (a child prim ``NODE/outputs_NAME`` in older files, the property
+``NODE.outputs:NAME`` in newer ones): ``input_sources`` reads those as
+connections.
 """
 from __future__ import annotations
 
@@ -27,6 +31,29 @@ DYNAMIC_OUTPUTS = {"omni.graph.nodes.ReadPrimAttributes": "outputs:primBundle",
                    "omni.graph.nodes.ExtractBundle": "outputs:passThrough"}
 CONSTRUCTOR, WRITER = "omni.graph.nodes.BundleConstructor", "omni.graph.nodes.WritePrim"
 DYNAMIC_INPUTS = (CONSTRUCTOR, WRITER)
+
+
+def input_sources(prim, spec):
+    """(input name, source property paths) of a node prim's connected inputs, bundle relationships included."""
+    for prop in prim.GetAuthoredProperties():
+        name = prop.GetName()
+        if not name.startswith("inputs:"):
+            continue
+        if not hasattr(prop, "GetTargets"):
+            yield name, prop.GetConnections()
+            continue
+        attribute = spec.attribute(name) if spec is not None else None
+        if attribute is None or not attribute.attr_type.is_bundle:
+            continue
+        sources = []
+        for target in prop.GetTargets():
+            if target.IsPropertyPath():
+                sources.append(target)
+            elif target.name.startswith("outputs_"):
+                sources.append(target.GetParentPath().AppendProperty("outputs:" + target.name[len("outputs_"):]))
+            else:
+                sources.append(target)      # not an output bundle: the caller names it as dropped
+        yield name, sources
 
 
 def _node_name(base: str, attribute: str, taken: set[str]) -> str:

@@ -26,7 +26,7 @@ from graphflow.document import (
 )
 from graphflow.errors import BadInput
 from graphflow.registry import Registry, default_registry
-from graphflow.usd.bundle_ports import DYNAMIC_INPUTS, expand
+from graphflow.usd.bundle_ports import DYNAMIC_INPUTS, expand, input_sources
 from graphflow.usd.graph_parts import (
     INSTANCE_TOKEN,
     PORT_CHANGES,
@@ -239,7 +239,7 @@ def _authored_inputs(prim, node_type, label: str, warnings: list[str], removed: 
             if _has_content(prop):
                 warnings.append(f"{label}: node '{prim.GetName()}' input '{name}': not an input of graphflow's {spec.id}; dropped")
             continue
-        if attribute.is_execution:
+        if attribute.is_execution or attribute.attr_type.is_bundle:   # set by connections (bundle_ports)
             continue
         if hasattr(prop, "GetTargets"):  # a relationship: target inputs hold prim paths
             targets = [str(path) for path in prop.GetTargets()]
@@ -311,11 +311,8 @@ def _connections(node_prims, graph_path, kept: dict, label: str, warnings: list[
     for prim in node_prims:
         if prim.GetName() not in kept:
             continue
-        for attribute in prim.GetAttributes():
-            name = attribute.GetName()
-            if not name.startswith("inputs:"):
-                continue
-            for source in attribute.GetConnections():
+        for name, sources in input_sources(prim, kept[prim.GetName()].spec):
+            for source in sources:
                 source_node = source.GetPrimPath()
                 source_name = source.name
                 where = f"{label}: node '{prim.GetName()}' input '{name}'"
