@@ -8,13 +8,14 @@ import math
 
 import pytest
 
-from graphflow.bundles import Bundle
+from graphflow.bundles import Bundle, BundleAttribute
 from graphflow.document import GraphError
 from graphflow.executor import GraphRuntimeError
 from graphflow.observe.trace import to_json_value
 from graphflow.poses import quat_rotate
 from graphflow.runtime import create_world
 from graphflow.testing import GraphHarness, NodeHarness
+from graphflow.world import WorldError
 
 G = 9.81
 STAGE = '''#usda 1.0
@@ -188,15 +189,13 @@ def test_a_bundle_read_back_unchanged_writes_as_a_no_op_and_a_changed_one_moves_
     bundle = world.read_prim("/World/Cube")                    # size, extent, purpose...: none writable
     writer = NodeHarness("omni.graph.nodes.WritePrims", world=world)
     assert "execOut" in writer.compute("execIn", primsBundle=Bundle((), (bundle,))).fired
-    moved = bundle.with_attribute(type(bundle.get("xformOp:translate"))("xformOp:translate", "double[3]",
-                                                                         (1.0, 1.0, 1.0)))
+    moved = bundle.with_attribute(BundleAttribute("xformOp:translate", "double[3]", (1.0, 1.0, 1.0)))
     NodeHarness("omni.graph.nodes.WritePrimsV2", world=world).compute("execIn", primsBundle=moved)
     assert world.prim_pose("/World/Cube")[0] == pytest.approx((1.0, 1.0, 1.0), abs=1e-9)
 
 
 def test_write_prims_v2_maps_prim_bundles_to_targets_one_to_one(world):
-    bundle = world.read_prim("/World/Cube").with_attribute(
-        type(world.read_prim("/World/Cube").get("size"))("physics:mass", "float", 3.0))
+    bundle = world.read_prim("/World/Cube").with_attribute(BundleAttribute("physics:mass", "float", 3.0))
     writer = NodeHarness("omni.graph.nodes.WritePrimsV2", {"prims": ["/World/Cube", "/World/Ball"]}, world=world)
     with pytest.raises(GraphRuntimeError, match="names 2 targets for 1 prim bundles"):
         writer.compute("execIn", primsBundle=bundle)
@@ -236,3 +235,26 @@ def test_a_bundle_in_a_trace_is_its_attributes_by_name(world):
     assert child["attributes"]["xformOp:translate"] == [2.0, 0.0, 0.3]
     assert list(child["attributes"])[:2] == ["sourcePrimPath", "sourcePrimType"]
     assert math.isclose(child["attributes"]["worldMatrix"][14], 0.3)
+
+
+def test_the_fake_world_reads_prims_with_its_own_values_live():
+    from pxr import Usd, UsdGeom
+
+    from graphflow.testing.fake_world import FakeWorld
+
+    stage = Usd.Stage.CreateInMemory()
+    UsdGeom.Cube.Define(stage, "/World/Box").CreateSizeAttr(0.5)
+    world = FakeWorld(stage=stage)
+    half = math.sqrt(0.5)
+    world.add_box("/World/Box", (1.0, 2.0, 3.0), (0.25, 0.25, 0.25), orientation=(0.0, 0.0, half, half))
+    world.set_attribute("/World/Box", "size", 0.75)                       # the world's value wins over USD's
+    bundle = world.read_prim("/World/Box")
+    assert bundle.get("size").value == 0.75 and bundle.source_prim_type == "Cube"
+    matrix = bundle.get("worldMatrix").value                               # +90 deg about Z: x axis -> +y
+    assert matrix[0:3] == pytest.approx((0.0, 1.0, 0.0)) and matrix[12:15] == pytest.approx((1.0, 2.0, 3.0))
+    bare = FakeWorld()
+    bare.add_box("/Box", (0.0, 0.0, 1.0), (0.1, 0.1, 0.1))
+    bare.set_attribute("/Box", "label", "crate")
+    assert bare.read_prim("/Box").get("label") == BundleAttribute("label", "token", "crate")
+    with pytest.raises(WorldError, match="no prim /Nothing"):
+        bare.read_prim("/Nothing")
