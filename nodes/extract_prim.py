@@ -10,7 +10,7 @@ SPEC = NodeSpec(
     categories=("bundle",),
     ui_name="Extract Prim",
     inputs=(
-        Attribute("prim", "target", description="The prim to extract"),
+        Attribute("prim", "target", optional=True, description="The prim to extract"),
         Attribute("primPath", "path", default="", description="Its path, used when 'prim' is empty"),
         Attribute("prims", "bundle", description="A bundle of prims (ReadPrims' output)"),
     ),

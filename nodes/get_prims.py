@@ -18,7 +18,7 @@ SPEC = NodeSpec(
         Attribute("bundle", "bundle", description="A bundle of prims (ReadPrims' output)"),
         Attribute("inverse", "bool", default=False, description="Keep the prims that do not match instead"),
         Attribute("pathPattern", "string", default="*", description=f"Prim paths to keep: {PATTERN_HELP}"),
-        Attribute("prims", "target", description="Prims to keep (none: no restriction)"),
+        Attribute("prims", "target", optional=True, description="Prims to keep (none: no restriction)"),
         Attribute("typePattern", "string", default="*", description=f"Prim types to keep: {PATTERN_HELP}"),
     ),
     outputs=(

@@ -17,7 +17,7 @@ SPEC = NodeSpec(
         Attribute("attrNamesToImport", "token", default="*", description=f"Attribute names to read: {PATTERN_HELP}"),
         Attribute("computeBoundingBox", "bool", default=False,
                   description="Add each prim's local bounding box (bboxMinCorner, bboxMaxCorner, bboxTransform)"),
-        Attribute("prim", "target", description="The prims to read when usePath is false"),
+        Attribute("prim", "target", optional=True, description="The prims to read when usePath is false"),
         Attribute("primPath", "token", default="", description="The paths to read when usePath is true"),
         Attribute("usdTimecode", "timecode", default=float("nan"), description=TIME_HELP),
         Attribute("usePath", "bool", default=False, description="Read primPath instead of 'prim'"),

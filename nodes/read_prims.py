@@ -22,7 +22,7 @@ SPEC = NodeSpec(
         Attribute("computeBoundingBox", "bool", default=False,
                   description="Add each prim's local bounding box (bboxMinCorner, bboxMaxCorner, bboxTransform)"),
         Attribute("pathPattern", "string", default="", description=f"Prim paths to find: {PATTERN_HELP}"),
-        Attribute("prims", "target", description="The prims to read when useFindPrims is false"),
+        Attribute("prims", "target", optional=True, description="The prims to read when useFindPrims is false"),
         Attribute("typePattern", "string", default="*", description=f"Prim types to find: {PATTERN_HELP}"),
         Attribute("usdTimecode", "timecode", default=float("nan"), description=TIME_HELP),
         Attribute("useFindPrims", "bool", default=False,

@@ -16,7 +16,7 @@ SPEC = NodeSpec(
     inputs=(
         Attribute("attrNamesToImport", "string", default="*", description=f"Attribute names to read: {PATTERN_HELP}"),
         Attribute("primPaths", "any", description="The paths read when usePaths is true: a path or a list of them"),
-        Attribute("prims", "target", description="The prims to read when usePaths is false"),
+        Attribute("prims", "target", optional=True, description="The prims to read when usePaths is false"),
         Attribute("usdTimecode", "timecode", default=float("nan"), description=TIME_HELP),
         Attribute("usePaths", "bool", default=False, description="Read primPaths instead of 'prims'"),
     ),

@@ -26,7 +26,7 @@ SPEC = NodeSpec(
         Attribute("enableChangeTracking", "bool", default=True,
                   description="Kit's USD change tracking (no effect on values: graphflow reads every compute)"),
         Attribute("pathPattern", "string", default="", description=f"Prim paths to find: {PATTERN_HELP}"),
-        Attribute("prims", "target", description="The prims to read, or the roots to search under"),
+        Attribute("prims", "target", optional=True, description="The prims to read, or the roots to search under"),
         Attribute("typePattern", "string", default="*", description=f"Prim types to find: {PATTERN_HELP}"),
         Attribute("usdTimecode", "timecode", default=float("nan"), description=TIME_HELP),
     ),

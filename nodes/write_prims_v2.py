@@ -24,7 +24,7 @@ SPEC = NodeSpec(
         Attribute("execIn", "execution", description="Write now"),
         Attribute("layerIdentifier", "token", default="", description="Kit's USD layer to persist to (no effect)"),
         Attribute("pathPattern", "string", default="*", description=f"Prims to write: {PATTERN_HELP}"),
-        Attribute("prims", "target", description="Target prims, one per prim bundle (none: the source prims)"),
+        Attribute("prims", "target", optional=True, description="Target prims, one per prim bundle (none: the source prims)"),
         Attribute("primsBundle", "bundle", description="The prims to write"),
         Attribute("scatterUnderTargets", "bool", default=False,
                   description="Create the prims under the targets (not available: must stay false)"),
