@@ -224,7 +224,7 @@ def parse_trace(text: str, path: str | Path = "<trace>") -> Trace:
     records = []
     for number, line in enumerate(lines, start=1):
         try:
-            record = loads_strict(line, f"{path}: line {number}")
+            record = loads_strict(line, f"{path}: line {number}", non_finite=True)   # NaN, Infinity as written
         except FileProblem as error:
             if number == 1:
                 raise TraceError(f"{path}: not a graphflow trace (line 1 is not a JSON header: {error.reason})") from None
