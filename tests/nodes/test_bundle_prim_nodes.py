@@ -258,3 +258,20 @@ def test_the_fake_world_reads_prims_with_its_own_values_live():
     assert bare.read_prim("/Box").get("label") == BundleAttribute("label", "token", "crate")
     with pytest.raises(WorldError, match="no prim /Nothing"):
         bare.read_prim("/Nothing")
+
+
+def test_usd_timecode_reads_authored_time_samples():
+    from pxr import Usd, UsdGeom
+
+    from graphflow.testing.fake_world import FakeWorld
+
+    stage = Usd.Stage.CreateInMemory()
+    size = UsdGeom.Cube.Define(stage, "/World/Box").CreateSizeAttr(1.0)
+    size.Set(1.0, 1.0)
+    size.Set(3.0, 3.0)                                                     # USD interpolates linearly between
+    world = FakeWorld(stage=stage)
+    at = {time: NodeHarness("omni.graph.nodes.ReadPrim", {"prim": ["/World/Box"], "usdTimecode": time},
+                            world=world).compute().outputs["primBundle"].get("size").value for time in (1.0, 2.0, 5.0)}
+    assert at == {1.0: 1.0, 2.0: 2.0, 5.0: 3.0}
+    default = NodeHarness("omni.graph.nodes.ReadPrim", {"prim": ["/World/Box"]}, world=world).compute()
+    assert default.outputs["primBundle"].get("size").value == 1.0           # NaN: USD's default time
