@@ -19,7 +19,7 @@ SPEC = NodeSpec(
         Attribute("computeBoundingBox", "bool", default=False,
                   description="Add the prim's local bounding box (bboxMinCorner, bboxMaxCorner, bboxTransform)"),
         Attribute("prim", "target", description="The prim to read"),
-        Attribute("usdTimecode", "timecode", default=float("nan"), description=TIME_HELP),
+        Attribute("usdTimecode", "timecode", default="nan", description=TIME_HELP),
     ),
     outputs=(
         Attribute("primBundle", "bundle", description="The prim's attributes, with sourcePrimPath and sourcePrimType"),

@@ -23,7 +23,7 @@ SPEC = NodeSpec(
         Attribute("attrNamesToImport", "string", default="*", description=f"Attribute names to read: {PATTERN_HELP}"),
         Attribute("prim", "target", optional=True, description="The prim to read when usePath is false"),
         Attribute("primPath", "path", default="", optional=True, description="The prim read when usePath is true"),
-        Attribute("usdTimecode", "timecode", default=float("nan"), description=TIME_HELP),
+        Attribute("usdTimecode", "timecode", default="nan", description=TIME_HELP),
         Attribute("usePath", "bool", default=False, description="Read primPath instead of 'prim'"),
     ),
     outputs=(

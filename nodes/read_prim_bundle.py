@@ -19,7 +19,7 @@ SPEC = NodeSpec(
                   description="Add each prim's local bounding box (bboxMinCorner, bboxMaxCorner, bboxTransform)"),
         Attribute("prim", "target", optional=True, description="The prims to read when usePath is false"),
         Attribute("primPath", "token", default="", description="The paths to read when usePath is true"),
-        Attribute("usdTimecode", "timecode", default=float("nan"), description=TIME_HELP),
+        Attribute("usdTimecode", "timecode", default="nan", description=TIME_HELP),
         Attribute("usePath", "bool", default=False, description="Read primPath instead of 'prim'"),
     ),
     outputs=(

@@ -24,7 +24,7 @@ SPEC = NodeSpec(
         Attribute("pathPattern", "string", default="", description=f"Prim paths to find: {PATTERN_HELP}"),
         Attribute("prims", "target", optional=True, description="The prims to read when useFindPrims is false"),
         Attribute("typePattern", "string", default="*", description=f"Prim types to find: {PATTERN_HELP}"),
-        Attribute("usdTimecode", "timecode", default=float("nan"), description=TIME_HELP),
+        Attribute("usdTimecode", "timecode", default="nan", description=TIME_HELP),
         Attribute("useFindPrims", "bool", default=False,
                   description="Read the prims pathPattern and typePattern find instead of 'prims'"),
     ),

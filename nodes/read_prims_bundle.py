@@ -17,7 +17,7 @@ SPEC = NodeSpec(
         Attribute("attrNamesToImport", "string", default="*", description=f"Attribute names to read: {PATTERN_HELP}"),
         Attribute("primPaths", "any", description="The paths read when usePaths is true: a path or a list of them"),
         Attribute("prims", "target", optional=True, description="The prims to read when usePaths is false"),
-        Attribute("usdTimecode", "timecode", default=float("nan"), description=TIME_HELP),
+        Attribute("usdTimecode", "timecode", default="nan", description=TIME_HELP),
         Attribute("usePaths", "bool", default=False, description="Read primPaths instead of 'prims'"),
     ),
     outputs=(

@@ -28,7 +28,7 @@ SPEC = NodeSpec(
         Attribute("pathPattern", "string", default="", description=f"Prim paths to find: {PATTERN_HELP}"),
         Attribute("prims", "target", optional=True, description="The prims to read, or the roots to search under"),
         Attribute("typePattern", "string", default="*", description=f"Prim types to find: {PATTERN_HELP}"),
-        Attribute("usdTimecode", "timecode", default=float("nan"), description=TIME_HELP),
+        Attribute("usdTimecode", "timecode", default="nan", description=TIME_HELP),
     ),
     outputs=(
         Attribute("primsBundle", "bundle", description="One child bundle per prim read"),

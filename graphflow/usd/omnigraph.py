@@ -13,6 +13,7 @@ variables (graph_parts).
 """
 from __future__ import annotations
 
+import math
 import os
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -373,6 +374,8 @@ def _value(attribute):
 
 
 def _plain(value):
+    if isinstance(value, float) and not math.isfinite(value):   # graph files are strict JSON: "nan", "inf", "-inf"
+        return "nan" if math.isnan(value) else ("inf" if value > 0 else "-inf")
     if value is None or isinstance(value, (bool, int, float, str)):
         return value
     if hasattr(value, "pathString"):

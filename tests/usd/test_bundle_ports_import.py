@@ -6,8 +6,11 @@ ReadPrimsV2's output bundle reaches ExtractPrim through a relationship to its `o
 and ExtractPrim's reaches GetAttributeNames through one to `.outputs:primBundle` (newer files); a WritePrim
 writes its connected dynamic `xformOp:translate` (and drops the authored, unconnected `size`, as Kit does).
 """
+import math
+
 import pytest
 
+from graphflow.document import load_document, save_document
 from graphflow.runtime import create_world
 from graphflow.testing import GraphHarness
 from graphflow.usd.omnigraph import import_graph
@@ -48,6 +51,7 @@ def Xform "World"
             token node:type = "omni.graph.nodes.ReadPrimAttributes"
             int node:typeVersion = 3
             custom string inputs:attrNamesToImport = "*"
+            custom timecode inputs:usdTimecode = nan
             rel inputs:prim = </World/Cube>
             custom double outputs:size
             custom double3 outputs:xformOp:translate
@@ -147,6 +151,15 @@ def test_dynamic_bundle_ports_become_extract_and_insert_nodes_each_named_once(im
         assert sum(f"'{added}'" in line for line in lines) == 1
     assert any("node 'write' input 'inputs:size' = 3.0 is not connected" in line for line in lines)
     assert not any("dropped" in line and "size" not in line for line in lines), lines
+
+
+def test_kits_nan_time_code_is_saved_as_strict_json_and_loads_back(imported, tmp_path):
+    result, stage = imported
+    saved = tmp_path / "bundles.json"
+    save_document(result.document, saved)
+    assert '"usdTimecode": "nan"' in saved.read_text()                 # graph files hold no NaN literal
+    graph = GraphHarness(load_document(saved), world=create_world(stage))
+    assert math.isnan(graph.instance.database("attrs").inputs.usdTimecode)
 
 
 def test_the_imported_bundle_graph_runs_and_writes_the_cube(imported):
