@@ -9,7 +9,8 @@ the capture. Both go through the same ``_encode``: the records are identical.
 """
 from __future__ import annotations
 
-from itertools import islice
+from itertools import compress, islice
+from operator import is_not
 from typing import IO, Any, Iterator, Sequence
 
 from graphflow.observe.trace import (
@@ -66,6 +67,8 @@ class TraceRecorder:
         self._sources = [(outputs, name) for outputs, name, _key in slots]   # where each data output lives
         self._keys = [key for _outputs, _name, key in slots]
         self._raw: list[Any] = [_MISSING] * len(slots)   # each output as last encoded, to skip unchanged ones
+        self._immutable: list[Any] = [_MISSING] * len(slots)   # each output's object when last found immutable
+        self._slot_indices = range(len(slots))
         self._outputs = {key: to_json_value(outputs[name]) for outputs, name, key in slots}
         self._scene = SceneSection(simulation)
         description = getattr(simulation.world, "description", None)
@@ -110,9 +113,13 @@ class TraceRecorder:
         flat += self._pulses
         self._pulses.clear()
         values = [outputs[name] for outputs, name in self._sources]
-        for index, value in enumerate(values):
+        immutable = self._immutable
+        for index in compress(self._slot_indices, map(is_not, values, immutable)):   # a new object in the slot
+            value = values[index]
             kind = type(value)
-            if kind not in _SCALARS and not (kind is tuple and _scalar_items(value)):
+            if kind in _SCALARS or (kind is tuple and _scalar_items(value)):
+                immutable[index] = value
+            else:
                 values[index] = to_json_value(value)   # a list or array a node may change in place: a copy
         flat += values
         events = instance.events
@@ -134,7 +141,7 @@ class TraceRecorder:
         for path, sample in samples.items():
             flat.append(path)
             flat += sample
-        self._scene.capture(manager, flat)
+        self._scene.capture(manager, samples, flat)
         self._pending += 1
 
     def _encode(self, items: Iterator) -> dict:

@@ -81,9 +81,10 @@ class SceneSection:
         links = sorted({path for articulation in description.articulations for path in articulation.bodies})
         return {"scene": {"upAxis": description.up_axis, "poseEvery": self.pose_every, "bodies": bodies, "links": links}}
 
-    def capture(self, manager, flat: list) -> None:
+    def capture(self, manager, samples: dict, flat: list) -> None:
         """Append what ``encode`` needs of this tick to *flat*, read now: compute counts, whether poses were
-        sampled and each sampled pose's seven numbers, the rays of closes that began (or None)."""
+        sampled and each sampled pose's seven numbers, the rays of closes that began (or None). *samples*: the
+        tick's gripper samples (``graphflow.observe.trace.sample_grippers``), whose statuses say which began."""
         flat += self.instance.compute_counts
         if self.moving and self.instance.tick_count % self.pose_every == 0:
             flat.append(True)
@@ -92,7 +93,7 @@ class SceneSection:
                 flat += orientation
         else:
             flat.append(False)
-        flat.append(self._rays_on_close(manager) if manager is not None else None)
+        flat.append(self._rays_on_close(manager, samples) if manager is not None else None)
 
     def encode(self, items: Iterator) -> dict:
         """A tick's ``computed`` nodes, sampled ``poses`` that changed and ``rays``, read from its capture by *items*."""
@@ -116,14 +117,14 @@ class SceneSection:
             record["rays"] = rays
         return record
 
-    def _rays_on_close(self, manager) -> dict:
+    def _rays_on_close(self, manager, samples: dict) -> dict:
         rays = {}
-        for path in sorted(getattr(manager, "components", {})):
-            component = manager.component(path)
-            status = component.status.token
-            previous = self._gripper_status.get(path, "Open")
-            self._gripper_status[path] = status
-            if previous == "Open" and status != "Open":
+        statuses = self._gripper_status
+        for path, sample in samples.items():
+            previous = statuses.get(path, "Open")
+            statuses[path] = sample.status
+            if previous == "Open" and sample.status != "Open":
+                component = manager.component(path)
                 rays[path] = {"limits": force_limits(component),
                               "rays": [self._ray(component, point) for point in component.points]}
         return rays

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from graphflow.poses import Pose
+from graphflow.poses import Pose, invert
 from graphflow.usd.description import Joint
 
 
@@ -23,6 +23,10 @@ class BodyHandle:
     mass: float                     # as built (the world keeps the live mass)
     gravity_enabled: bool
     articulation: str | None = None
+    prim_in_inertial: Pose = field(init=False, repr=False, compare=False)   # the inverse, for every pose read
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "prim_in_inertial", invert(self.inertial_in_prim))
 
 
 @dataclass(frozen=True)

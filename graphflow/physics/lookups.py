@@ -8,7 +8,7 @@ cleared on every rebuild).
 from __future__ import annotations
 
 from graphflow.physics.handles import ArticulationHandle, BodyHandle
-from graphflow.poses import IDENTITY_POSE, Pose, compose, invert, relative
+from graphflow.poses import IDENTITY_POSE, Pose, compose, relative
 from graphflow.world import WorldError
 
 
@@ -84,30 +84,38 @@ class SceneLookups:
         return tuple(position), tuple(orientation)
 
     def _body_pose(self, handle: BodyHandle) -> Pose:
-        return compose(self._inertial_pose(handle), invert(handle.inertial_in_prim))
+        return compose(self._inertial_pose(handle), handle.prim_in_inertial)
 
     def body_poses(self, paths) -> list[Pose]:
         """World poses of rigid-body prims, the same numbers as ``prim_pose`` gives one at a time.
 
         One ``getLinkStates`` call per multibody instead of a call per link, planned once per
         list of paths: a run report samples every moving body and link, and the per-call cost is
-        most of it.
+        most of it. A body whose inertial pose is what it was at the previous call (at rest, a
+        fixed base) gets the pose composed then instead of composing it again.
         """
         key = tuple(paths)
         plan = self._pose_plans.get(key)
         if plan is None:
             plan = self._pose_plans[key] = self._pose_plan(key)
-        bases, link_groups, prim_in_inertial = plan
+        bases, link_groups, prim_in_inertial, last = plan
         inertial: list = [None] * len(key)
         for index, body_id in bases:
             inertial[index] = self.client.getBasePositionAndOrientation(body_id)
         for body_id, links, indices in link_groups:
             for index, state in zip(indices, self.client.getLinkStates(body_id, links, computeForwardKinematics=1)):
                 inertial[index] = (state[0], state[1])
-        return [compose(pose, offset) for pose, offset in zip(inertial, prim_in_inertial)]
+        poses = []
+        for index, pose in enumerate(inertial):
+            previous = last[index]
+            if previous is None or previous[0] != pose:
+                previous = last[index] = (pose, compose(pose, prim_in_inertial[index]))
+            poses.append(previous[1])
+        return poses
 
     def _pose_plan(self, paths: tuple[str, ...]):
-        """(base index and body id pairs, (body id, links, indices) per multibody, each prim frame in its inertial frame)."""
+        """(base index and body id pairs, (body id, links, indices) per multibody, each prim frame in its inertial
+        frame, each body's last (inertial pose, pose) read: None until the first)."""
         handles = []
         for path in paths:
             if path not in self.scene.bodies:
@@ -119,7 +127,7 @@ class SceneLookups:
             if handle.link != -1:
                 grouped.setdefault(handle.body_id, []).append(index)
         link_groups = [(body_id, [handles[i].link for i in indices], indices) for body_id, indices in grouped.items()]
-        return bases, link_groups, [invert(handle.inertial_in_prim) for handle in handles]
+        return bases, link_groups, [handle.prim_in_inertial for handle in handles], [None] * len(handles)
 
     def _prim_offset(self, prim_path: str) -> tuple[str | None, Pose]:
         """(nearest body ancestor or None, the prim's pose in it), from the stage's authored transforms."""

@@ -128,7 +128,7 @@ class PyBulletWorld(SceneLookups):
         self._probe: int | None = None          # the collision shape of ``_body_around``
         self._pending_forces: list[tuple[int, int, tuple, tuple | None]] = []
         self._offsets: dict = {}
-        self._pose_plans: dict = {}             # body_poses: paths -> which PyBullet calls answer them
+        self._pose_plans: dict = {}             # body_poses: paths -> which PyBullet calls answer them, last poses
         self._joint_torques: dict[str, list[float]] = {}    # the last step's TORQUE_CONTROL forces, by articulation
 
     @property

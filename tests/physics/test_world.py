@@ -195,6 +195,12 @@ def test_body_poses_are_each_bodys_prim_pose_in_one_query():
                 world.step()
             assert world.body_poses(moving) == [world.prim_pose(path) for path in moving]
             assert world.body_poses(moving[::-1]) == [world.prim_pose(path) for path in moving[::-1]]
+        resting = world.body_poses(moving)
+        world.set_attribute("/World/Cube", "xformOp:translate", (0.7, 0.1, 0.3))   # a resting body moved
+        poses = dict(zip(moving, world.body_poses(moving)))
+        assert poses["/World/Cube"][0] == pytest.approx((0.7, 0.1, 0.3), abs=1e-9)
+        assert poses["/World/Cube"] != resting[moving.index("/World/Cube")]
+        assert list(poses.values()) == [world.prim_pose(path) for path in moving]
         with pytest.raises(WorldError, match="/World/ur10/ee_link/collision is not a rigid body"):
             world.body_poses(["/World/ur10/ee_link/collision"])
 
