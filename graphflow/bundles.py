@@ -92,13 +92,6 @@ class Bundle:
     def with_children(self, children: tuple[Bundle, ...]) -> Bundle:
         return Bundle(self.attributes, tuple(children))
 
-    def summary(self) -> str:
-        """A short label (wires, reports): ``{3 attributes}`` or ``{0 attributes, 2 children}``."""
-        text = f"{len(self.attributes)} attribute{'s' if len(self.attributes) != 1 else ''}"
-        if self.children:
-            text += f", {len(self.children)} child{'ren' if len(self.children) != 1 else ''}"
-        return "{" + text + "}"
-
 
 def type_of_value(value: Any) -> str | None:
     """The graphflow type a plain value holds, for attributes inserted from ``any`` ports; None if none fits.
