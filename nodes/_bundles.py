@@ -106,7 +106,7 @@ def write(db, path: str, bundle: Bundle, patterns: str = "*") -> None:
         if item.name in PRIM_INTERNAL or item.name in DERIVED or not wildcard(patterns, item.name):
             continue
         try:
-            if world.get_attribute(path, item.name) == item.value:
+            if _same(world.get_attribute(path, item.name), item.value):
                 continue
         except WorldError:
             pass
@@ -114,6 +114,13 @@ def write(db, path: str, bundle: Bundle, patterns: str = "*") -> None:
             world.set_attribute(path, item.name, item.value)
         except WorldError as error:
             db.error(f"attribute '{item.name}': {error}")
+
+
+def _same(a, b) -> bool:
+    """Equal values, NaN matching NaN (a value read back unchanged is no write)."""
+    if isinstance(a, tuple) and isinstance(b, tuple):
+        return len(a) == len(b) and all(_same(x, y) for x, y in zip(a, b))
+    return a == b or (isinstance(a, float) and isinstance(b, float) and a != a and b != b)
 
 
 def fabric_type(type_name: str) -> tuple[int, int, int, int]:

@@ -275,3 +275,20 @@ def test_usd_timecode_reads_authored_time_samples():
     assert at == {1.0: 1.0, 2.0: 2.0, 5.0: 3.0}
     default = NodeHarness("omni.graph.nodes.ReadPrim", {"prim": ["/World/Box"]}, world=world).compute()
     assert default.outputs["primBundle"].get("size").value == 1.0           # NaN: USD's default time
+
+
+def test_a_value_read_back_unchanged_is_no_write_even_when_it_is_nan():
+    from graphflow.testing.fake_world import FakeWorld
+
+    class ReadOnlyWorld(FakeWorld):
+        def set_attribute(self, prim_path, name, value):
+            raise WorldError(f"{prim_path}: attribute {name} is read-only")
+
+    world = ReadOnlyWorld()
+    world.attributes[("/Box", "gap")] = float("nan")
+    world.attributes[("/Box", "limits")] = (float("nan"), 1.0)
+    writer = NodeHarness("omni.graph.nodes.WritePrims", world=world)
+    assert "execOut" in writer.compute("execIn", primsBundle=world.read_prim("/Box")).fired
+    changed = world.read_prim("/Box").with_attribute(BundleAttribute("gap", "double", 0.5))
+    with pytest.raises(GraphRuntimeError, match="attribute 'gap': /Box: attribute gap is read-only"):
+        writer.compute("execIn", primsBundle=changed)
