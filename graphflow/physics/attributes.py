@@ -211,8 +211,6 @@ def set_attribute(world, prim_path: str, name: str, value) -> None:
 
 def read_prim(world, prim_path: str, bounding_box: bool = False, time: float | None = None):
     """The prim's bundle: USD's composed values, with the simulated ones (``ATTRIBUTES``) read live."""
-    from graphflow.usd.prim_bundle import prim_bundle
-
     prim = world.stage.GetPrimAtPath(prim_path) if world.stage is not None and prim_path.startswith("/") else None
     if not prim:
         raise WorldError(f"no prim {prim_path} on this stage")
@@ -229,7 +227,7 @@ def read_prim(world, prim_path: str, bounding_box: bool = False, time: float | N
         pose = world.prim_pose(prim_path)
     except WorldError:       # not placed in space (a scope, a material): no worldMatrix from physics
         pose = None
-    return prim_bundle(prim, live=live, world_pose=pose, bounding_box=bounding_box, time=time)
+    return world.prim_reader.read(prim, live=live, world_pose=pose, bounding_box=bounding_box, time=time)
 
 
 def _get_usd_attribute(world, prim_path: str, name: str):

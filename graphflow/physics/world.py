@@ -33,6 +33,7 @@ from graphflow.physics.native_output import native_stdout_silenced
 from graphflow.poses import compose
 from graphflow.usd.description import StageDescription
 from graphflow.usd.errors import warn_unsupported
+from graphflow.usd.prim_bundle import PrimReader
 from graphflow.world import DEFAULT_TIME_STEP, Contact, RayHit, Services, WorldError
 
 SOLVER_ITERATIONS = 50              # PyBullet's default, stated so it stays fixed
@@ -91,6 +92,7 @@ class PyBulletWorld(SceneLookups):
             raise WorldError(f"cannot open a PyBullet {'GUI' if gui else 'DIRECT'} client: {error}") from None
         self._mesh_directory = tempfile.mkdtemp(prefix="graphflow-meshes-")
         self.services = Services()
+        self.prim_reader = PrimReader()     # what USD composed for each prim read into a bundle, kept for the run
         self.attachments = WorldAttachments(self)
         self.unsupported: list[tuple[str, str]] = list(description.unsupported)
         self._closed = False

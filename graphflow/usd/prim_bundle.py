@@ -26,24 +26,53 @@ def prim_bundle(prim, *, live: Callable[[str], Any], world_pose: Pose | None, bo
     """The bundle of one prim. ``live(name)`` returns the simulated value of an attribute or None (use USD's,
     at time code *time*; None: the default time); ``world_pose`` is the prim's current world pose (None: USD's
     transform)."""
-    from pxr import Usd, UsdGeom
+    return PrimReader().read(prim, live=live, world_pose=world_pose, bounding_box=bounding_box, time=time)
+
+
+class PrimReader:
+    """``prim_bundle`` keeping what USD composed for each prim (its attributes, transform and extent), which
+    does not change while a world runs: a prim read every tick costs its live values and one matrix product."""
+
+    def __init__(self):
+        self._composed: dict[tuple[str, float | None], tuple] = {}
+        self._boxes: dict[str, list[BundleAttribute]] = {}
+
+    def read(self, prim, *, live: Callable[[str], Any], world_pose: Pose | None, bounding_box: bool = False,
+             time: float | None = None) -> Bundle:
+        key = (str(prim.GetPath()), time)
+        composed = self._composed.get(key)
+        if composed is None:
+            composed = self._composed[key] = _composed(prim, time)
+        fixed, transform = composed
+        attributes = []
+        for attribute in fixed:
+            value = live(attribute.name)
+            attributes.append(attribute if value is None else BundleAttribute(attribute.name, attribute.type, value))
+        if transform is not None:
+            attributes.append(BundleAttribute(WORLD_MATRIX, "matrixd[16]", _world_matrix(transform, world_pose)))
+        if bounding_box:
+            if key[0] not in self._boxes:
+                self._boxes[key[0]] = _bounding_box(prim)
+            attributes.extend(self._boxes[key[0]])
+        return Bundle.of_prim(key[0], prim.GetTypeName(), tuple(attributes))
+
+
+def _composed(prim, time: float | None) -> tuple:
+    """(USD's attributes with their values, (USD's world matrix, its rigid part's inverse) or None)."""
+    from pxr import Gf, Usd, UsdGeom
 
     when = Usd.TimeCode.Default() if time is None else Usd.TimeCode(time)
-
     attributes = []
     for attribute in prim.GetAttributes():
         type_name = graphflow_type(str(attribute.GetTypeName()))
         if type_name is None or not attribute.HasValue():
             continue
-        value = live(attribute.GetName())
-        if value is None:
-            value = usd_value(attribute.Get(when), type_name)
-        attributes.append(BundleAttribute(attribute.GetName(), type_name, value))
+        attributes.append(BundleAttribute(attribute.GetName(), type_name, usd_value(attribute.Get(when), type_name)))
+    transform = None
     if prim.IsA(UsdGeom.Xformable):
-        attributes.append(BundleAttribute(WORLD_MATRIX, "matrixd[16]", _world_matrix(prim, world_pose)))
-    if bounding_box:
-        attributes.extend(_bounding_box(prim))
-    return Bundle.of_prim(str(prim.GetPath()), prim.GetTypeName(), tuple(attributes))
+        matrix = UsdGeom.Xformable(prim).ComputeLocalToWorldTransform(Usd.TimeCode.Default())
+        transform = (matrix, Gf.Matrix4d(matrix).RemoveScaleShear().GetInverse())
+    return tuple(attributes), transform
 
 
 def usd_value(value, type_name: str):
@@ -66,17 +95,16 @@ def usd_value(value, type_name: str):
     return value
 
 
-def _world_matrix(prim, world_pose: Pose | None) -> tuple[float, ...]:
+def _world_matrix(transform, world_pose: Pose | None) -> tuple[float, ...]:
     """USD's local-to-world matrix with its rigid part replaced by *world_pose* (scale and shear kept)."""
-    from pxr import Gf, Usd, UsdGeom
+    from pxr import Gf
 
-    matrix = UsdGeom.Xformable(prim).ComputeLocalToWorldTransform(Usd.TimeCode.Default())
+    matrix, rigid_inverse = transform
     if world_pose is not None:
-        rigid = Gf.Matrix4d(matrix).RemoveScaleShear()
         (x, y, z), (qx, qy, qz, qw) = world_pose
         current = Gf.Matrix4d().SetRotate(Gf.Quatd(qw, qx, qy, qz))
         current.SetTranslateOnly(Gf.Vec3d(x, y, z))
-        matrix = matrix * rigid.GetInverse() * current
+        matrix = matrix * rigid_inverse * current
     return tuple(float(c) for row in matrix for c in row)
 
 
