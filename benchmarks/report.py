@@ -1,9 +1,11 @@
 """report: what the run report costs (graphflow run --report), against the same run without one.
 
-Recording: graphs/ur10_pick_place.json run whole with the report's recording
+Recording: graphs/ur10_pick_place.json run whole as ``graphflow run`` runs it (the
+checked run: its checks judged every tick and at the end) with the report's recording
 (the version-2 trace kept in memory: outputs, pulses, computed nodes, every moving
 body's pose every 4th tick) and without, fresh simulations, interleaved rounds, CPU
-time; the ratio is recorded / plain (target at most 1.10). The recording captures
+time; the ratio is recorded / plain (target at most 1.10). ``bare_ratio`` is the same
+for the bare simulation, nothing judged (a smaller denominator). The recording captures
 each tick during the run and encodes the records when they are read, so the
 encoding is timed too (``encode``) and ``with_encoding`` is (recorded run +
 encoding) / plain: what the whole trace costs. Then the report is written from a
@@ -34,26 +36,33 @@ SCRUB_STEPS = 40
 PAGE_LOADS = 3      # fresh browsers, each opening the report once
 
 
-def _simulation(path: Path, recorded: bool):
+def _timed_run(path: Path, recorded: bool, ticks: int | None, checked: bool = True):
+    """(CPU seconds of the run, CPU seconds encoding its recorded records (0 without), recording, document).
+
+    *checked*: the run as ``graphflow run`` makes it (``CheckedRun``: preflight, world, its checks judged
+    every tick and at the end); else the bare simulation, nothing judged."""
     from graphflow.document import load_document
     from graphflow.report.recording import ReportRecording
     from graphflow.runtime import Simulation
     from graphflow.seeding import seed_everything
+    from graphflow.verdicts.checked_run import CheckedRun, RunLimits
 
     document = load_document(str(path))
-    seed_everything(int(document.scenario.get("seed", 0)))
+    run_checked = CheckedRun(document, limits=RunLimits(ticks=ticks)) if checked else None
     with quiet():
-        sim = Simulation(document)
+        if run_checked is not None:
+            run_checked.preflight()
+            sim = run_checked.start()
+        else:
+            seed_everything(int(document.scenario.get("seed", 0)))
+            sim = Simulation(document)
     recording = ReportRecording(sim, str(path)) if recorded else None
-    return sim, recording, document
-
-
-def _timed_run(path: Path, recorded: bool, ticks: int | None):
-    """(CPU seconds of the run, CPU seconds encoding its recorded records (0 without), recording, document)."""
-    sim, recording, document = _simulation(path, recorded)
     try:
         started = clock()
-        sim.run(ticks=ticks, seconds=None if ticks else document.settings.get("duration"))
+        if run_checked is not None:
+            run_checked.run()
+        else:
+            sim.run(ticks=ticks, seconds=None if ticks else document.settings.get("duration"))
         ran = clock() - started
         if recording is None:
             return ran, 0.0, recording, document
@@ -148,16 +157,19 @@ def _open_and_scrub(playwright, executable, report: Path) -> tuple[float, list[f
 def run(quick: bool = False) -> str:
     require(PICK_PLACE)
     ticks, rounds = (60, 2) if quick else (None, 9)
-    samples: dict[str, list[float]] = {"recorded": [], "plain": [], "encode": []}
+    samples: dict[str, list[float]] = {"recorded": [], "plain": [], "encode": [], "bare_recorded": [], "bare": []}
     for index in range(rounds):
         for recorded in ((True, False) if index % 2 == 0 else (False, True)):
             seconds, encoding, _recording, _document = _timed_run(PICK_PLACE, recorded, ticks)
             samples["recorded" if recorded else "plain"].append(seconds)
             if recorded:
                 samples["encode"].append(encoding)
+            bare, _encoding, _recording, _document = _timed_run(PICK_PLACE, recorded, ticks, checked=False)
+            samples["bare_recorded" if recorded else "bare"].append(bare)
     ratio = paired_ratio(samples["recorded"], samples["plain"])
     whole = [run + encode for run, encode in zip(samples["recorded"], samples["encode"])]
     figures = {"with_encoding": f"{paired_ratio(whole, samples['plain']):.2f}",
+               "bare_ratio": f"{paired_ratio(samples['bare_recorded'], samples['bare']):.2f}",
                "encode": f"{statistics.median(samples['encode']):.3f}s"}
     with tempfile.TemporaryDirectory(prefix="graphflow-report-bench-") as folder:
         write, size = _report(PICK_PLACE, ticks, Path(folder))

@@ -76,6 +76,13 @@ class Registry:
         resolved = self.resolve_id(type_id)
         return self._types.get(resolved) if resolved else None
 
+    def require(self, type_id: str) -> NodeType:
+        """The node type of a document already checked against this registry: a miss is a wrong registry."""
+        node_type = self.get(type_id)
+        if node_type is None:
+            raise KeyError(f"node type '{type_id}' is not in this registry")
+        return node_type
+
     def suggest(self, type_id: str) -> str | None:
         """The closest known id, for 'did you mean' hints (remembered: a file repeats its misspellings)."""
         if type_id not in self._suggestions:

@@ -38,7 +38,7 @@ class Arm:
         self.base_pose = world.prim_pose(base)
         current = world.joint_positions(robot_path)
         self.solution = tuple(current[i] for i in self.indices)
-        self._solved_for = None
+        self._solved_for: tuple | None = None
 
     def move_tip(self, tip, orientation) -> tuple[float, ...]:
         """Solve IK for the tool point (world frame) and send the joint targets; returns them."""

@@ -52,7 +52,7 @@ def numbers(value, name: str) -> tuple[float, ...]:
 def side(matrix, name: str, allowed=(2, 3, 4)) -> int:
     """The side of a flat square matrix (4, 9 or 16 values)."""
     n = SIZES.get(len(matrix) if isinstance(matrix, tuple) else 0)
-    if n not in allowed:
+    if n is None or n not in allowed:
         shapes = " or ".join(f"{k}x{k} ({k * k} values)" for k in allowed)
         raise MatrixError(f"inputs:{name} must be a {shapes} matrix, got {len(matrix) if isinstance(matrix, tuple) else matrix!r}"
                           f"{' values' if isinstance(matrix, tuple) else ''}")
@@ -94,7 +94,7 @@ def check_order(order: str) -> str:
 
 def euler_matrix(angles, order: str) -> tuple[float, ...]:
     """The 3x3 row-vector rotation of Euler *angles* (degrees, about X, Y, Z) applied in *order*."""
-    result = (1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0)
+    result: tuple[float, ...] = (1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0)
     for letter in check_order(order):
         axis = "XYZ".index(letter)
         result = multiply(result, axis_matrix(axis, angles[axis]), 3)
@@ -131,7 +131,7 @@ def quaternion_matrix(q) -> tuple[float, ...]:
     return transpose(column, 3)
 
 
-def row_lengths(m3) -> tuple[float, float, float]:
+def row_lengths(m3) -> tuple[float, ...]:
     return tuple(math.sqrt(sum(c * c for c in m3[3 * i:3 * i + 3])) for i in range(3))
 
 

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 
+from graphflow.node_api import NodeDb
 from graphflow.spec import Attribute
 
 
@@ -51,7 +52,7 @@ def publish(db, type_name: str, message: dict) -> None:
         db.error(str(error))
 
 
-def take(db, type_name: str) -> dict | None:
+def take(db: NodeDb, type_name: str) -> dict | None:
     """The topic's newest message if this node has not taken it yet, completed to *type_name*; else None."""
     from graphflow.ros2.messages import MessageError, complete
 
@@ -112,7 +113,7 @@ def service_inputs(*, exec_name: str, exec_description: str, with_name: bool = T
                Attribute("messageName", "string", default="", description="Service type name (AddTwoInts)")))
 
 
-def service_type_of(db) -> str | None:
+def service_type_of(db: NodeDb) -> str | None:
     """The node's ``pkg/srv/Name``; None (with Isaac's warning) while package or name is empty."""
     from graphflow.ros2.services import MessageError, service_type
 
@@ -137,7 +138,7 @@ def service_of(db) -> str:
     return f"/{namespace}/{name}" if namespace else f"/{name}"
 
 
-def service_fields(db, full_type: str, part: str) -> dict:
+def service_fields(db: NodeDb, full_type: str, part: str) -> dict:
     """messageFields (Isaac's ``Request:a`` / ``Response:sum`` inputs, gathered on import) as a whole *part*."""
     import json
 
@@ -156,7 +157,7 @@ def service_fields(db, full_type: str, part: str) -> dict:
         db.error(str(error))
 
 
-def take_service_part(db, service: str, full_type: str, part: str) -> dict | None:
+def take_service_part(db: NodeDb, service: str, full_type: str, part: str) -> dict | None:
     """The newest *part* of *service* this node has not taken yet, checked; else None."""
     from graphflow.ros2.services import MessageError, complete, topic
 

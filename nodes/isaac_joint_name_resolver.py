@@ -59,7 +59,7 @@ def _read_overrides(db) -> tuple[str, dict[str, str]]:
     prims = list(Usd.PrimRange(start))
     if not any(prim.HasAPI(UsdPhysics.ArticulationRootAPI) for prim in prims):
         db.error(f"no articulation root at or under {robot}")
-    overrides = {}
+    overrides: dict[str, str] = {}
     for prim in prims:
         attribute = prim.GetAttribute(NAME_OVERRIDE)
         override = attribute.Get() if attribute else None

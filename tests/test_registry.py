@@ -34,6 +34,16 @@ def test_aliases_resolve_to_the_current_type():
     assert document.node("g").type == "omni.isaac.acme.Grip"
 
 
+def test_require_gives_the_type_by_id_or_alias_and_names_a_type_it_does_not_have():
+    registry = Registry()
+    registry.register_module(_node_module("acme_nodes.grip", NodeSpec(
+        id="acme.robot.Grip", version=2, description="Grips.", aliases=("omni.isaac.acme.Grip",),
+        inputs=(Attribute("execIn", "execution"),))))
+    assert registry.require("omni.isaac.acme.Grip").spec.id == "acme.robot.Grip"
+    with pytest.raises(KeyError, match="node type 'acme.robot.Grab' is not in this registry"):
+        registry.require("acme.robot.Grab")
+
+
 def test_entry_point_packages_and_modules_register():
     package = types.ModuleType("acme_pkg")
     package.__path__ = []

@@ -16,6 +16,7 @@ from xml.sax.saxutils import escape, quoteattr
 import networkx as nx
 
 from graphflow.document import GraphDocument
+from graphflow.model import Connection
 from graphflow.registry import Registry, default_registry
 
 FORMATS = ("svg", "png", "mermaid", "dot")
@@ -141,13 +142,13 @@ def layers(document: GraphDocument, registry: Registry | None = None) -> dict[st
     (loop-closing edges are dropped), so exec chains read left to right and a
     pure node sits between what it reads and what reads it.
     """
-    registry = registry or default_registry()
-    specs = {node.name: registry.get(node.type).spec for node in document.nodes}
+    specs = {node.name: (registry or default_registry()).require(node.type).spec for node in document.nodes}
     order = list(specs)
     flow = nx.DiGraph()
     flow.add_nodes_from(order)
     for connection in document.connections:
-        exec_edge = specs[connection.dst_node].attribute(connection.dst_attr).is_execution
+        destination = specs[connection.dst_node].attribute(connection.dst_attr)
+        exec_edge = destination is not None and destination.is_execution
         if exec_edge or specs[connection.src_node].is_pure or specs[connection.dst_node].is_pure:
             flow.add_edge(connection.src_node, connection.dst_node)
     acyclic = _without_back_edges(flow, [name for name in order if specs[name].is_event_source])
@@ -189,20 +190,21 @@ def _without_back_edges(graph: nx.DiGraph, sources: list[str]) -> nx.DiGraph:
 def layout(document: GraphDocument, registry: Registry | None = None) -> Picture:
     """Place every node and route every connection (see the module docstring for the rules)."""
     registry = registry or default_registry()
-    specs = {node.name: registry.get(node.type).spec for node in document.nodes}
+    specs = {node.name: registry.require(node.type).spec for node in document.nodes}
     column = layers(document, registry)
     connected_inputs: dict[str, list[str]] = {name: [] for name in specs}
     connected_outputs: dict[str, list[str]] = {name: [] for name in specs}
     for connection in document.connections:
-        for table, node, attr in ((connected_outputs, connection.src_node, connection.src_attr),
-                                  (connected_inputs, connection.dst_node, connection.dst_attr)):
+        for table, node_name, attr in ((connected_outputs, connection.src_node, connection.src_attr),
+                                       (connected_inputs, connection.dst_node, connection.dst_attr)):
             name = attr.split(":", 1)[1]
-            if name not in table[node]:
-                table[node].append(name)
+            if name not in table[node_name]:
+                table[node_name].append(name)
 
     def ordered(node: str, names: list[str], group: str) -> list[str]:
         declared = [a.name for a in getattr(specs[node], group)]
-        return sorted(names, key=lambda n: (not specs[node].attribute(f"{group}:{n}").is_execution,
+        execution = {a.name for a in getattr(specs[node], group) if a.is_execution}
+        return sorted(names, key=lambda n: (n not in execution,
                                             declared.index(n) if n in declared else len(declared)))
 
     sizes, contents = {}, {}
@@ -234,7 +236,7 @@ def layout(document: GraphDocument, registry: Registry | None = None) -> Picture
     data_top = MARGIN + exec_band + (1.5 * ROW_GAP if exec_band and data_band else 0)
     column_width = {c: max(sizes[n][0] for n in names) for c, names in columns.items()}
     boxes: dict[str, Box] = {}
-    x = MARGIN
+    x: float = MARGIN
     for c in sorted(columns):
         for names, top, band in ((bands[c][0], MARGIN, exec_band), (bands[c][1], data_top, data_band)):
             y = top + (band - stacked_height(names)) / 2
@@ -246,7 +248,7 @@ def layout(document: GraphDocument, registry: Registry | None = None) -> Picture
     total_height = data_top + data_band - MARGIN if data_band else exec_band
 
     # edges that would run behind boxes of the columns they skip take a lane: exec above, data below
-    blocked = {"exec": [], "data": []}
+    blocked: dict[str, list[Connection]] = {"exec": [], "data": []}
     for connection in document.connections:
         source, target = boxes[connection.src_node], boxes[connection.dst_node]
         y1 = source.port("outputs", connection.src_attr.split(":", 1)[1]).y
@@ -257,7 +259,7 @@ def layout(document: GraphDocument, registry: Registry | None = None) -> Picture
             blocked[in_port.kind].append(connection)
     top_lanes = len(blocked["exec"]) * LANE_GAP
     bottom = MARGIN + top_lanes + total_height + LANE_GAP / 2
-    lanes = {c: MARGIN + i * LANE_GAP for i, c in enumerate(blocked["exec"])}
+    lanes: dict[Connection, float] = {c: MARGIN + i * LANE_GAP for i, c in enumerate(blocked["exec"])}
     lanes.update({c: bottom + (i + 0.5) * LANE_GAP for i, c in enumerate(blocked["data"])})
     boxes = {name: _shifted(box, top_lanes) for name, box in boxes.items()}
     edges = []

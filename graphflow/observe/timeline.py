@@ -120,10 +120,12 @@ def timeline_figure(data: Timeline, title: str):
 
     matplotlib.use("Agg")
     from matplotlib.figure import Figure
+    from matplotlib.layout_engine import ConstrainedLayoutEngine
 
     heights = [max(1.0, len(p.series) * ACTIVITY_ROW_HEIGHT) if p.kind == "pulses" else PANEL_HEIGHT for p in data.panels]
     note_height = 0.25 * len(data.notes) + 0.3
-    fig = Figure(figsize=(FIGURE_WIDTH, sum(heights) + note_height + 0.9), dpi=110, layout="constrained")
+    layout_engine = ConstrainedLayoutEngine()     # kept: the notes below reserve their strip through it
+    fig = Figure(figsize=(FIGURE_WIDTH, sum(heights) + note_height + 0.9), dpi=110, layout=layout_engine)
     fig.suptitle(f"{title}: timeline", fontsize=12)
     if data.panels:
         axes_list = fig.subplots(len(data.panels), 1, sharex=True, squeeze=False,
@@ -138,7 +140,7 @@ def timeline_figure(data: Timeline, title: str):
         axes_list[-1].set_xlim(0.0, max(data.end_time, 1e-9))
     if data.notes:
         fig.text(0.01, 0.005, "\n".join(f"note: {n}" for n in data.notes), fontsize=8, color="#555", va="bottom")
-        fig.get_layout_engine().set(rect=(0, note_height / fig.get_figheight(), 1, 1 - note_height / fig.get_figheight()))
+        layout_engine.set(rect=(0, note_height / fig.get_figheight(), 1, 1 - note_height / fig.get_figheight()))
     return fig
 
 

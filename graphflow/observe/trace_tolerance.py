@@ -293,19 +293,21 @@ def _at(state: _State, tick: int, time, name: str, left, right, bound: str = "")
     return Divergence(tick, time, name, left, right, bound, phase, grippers)
 
 
-def _compare_fields(states, keys, kinds: Mapping[str, str], tolerances: Tolerances):
+def _compare_fields(states, keys, kinds: Mapping[str, str], tolerances: Tolerances) -> tuple[str, Any, Any, str] | None:
     """(field, left, right, bound text) of the first field (sorted) that differs beyond its tolerance."""
     for key in sorted(keys):
         left, right = states[0].value(key), states[1].value(key)
         if key.startswith("outputs."):
-            name, kind = key[len("outputs."):], kinds.get(key[len("outputs."):], "values")
+            name = key[len("outputs."):]
+            kind = kinds.get(name, "values")
         else:
             name = key
-            kind = GRIPPER_KINDS.get(key.rpartition(".")[2])
-            if kind is None:   # status, gripped, reason: exact
+            gripper_kind = GRIPPER_KINDS.get(key.rpartition(".")[2])
+            if gripper_kind is None:   # status, gripped, reason: exact
                 if left != right:
                     return key, left, right, ""
                 continue
+            kind = gripper_kind
         bound, label = tolerances.bound(name, kind)
         found = _numbers_differ(left, right, bound)
         if found is not None:

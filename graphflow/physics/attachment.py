@@ -60,6 +60,7 @@ from graphflow.physics.support import supports_relieve
 from graphflow.poses import (
     AXIS_VECTORS,
     Pose,
+    Quat,
     compose,
     invert,
     quat_matrix,
@@ -326,7 +327,8 @@ class PyBulletAttachments:
         """The child frame that puts the object at the hold's offset ``D`` from the attach pose: ``C D^-1``."""
         if not any(hold.offset):
             return hold.child_at_attach
-        displacement = (tuple(hold.offset[:3]), _quat_from_rotation_vector(hold.offset[3:]))
+        offset = hold.offset
+        displacement = ((offset[0], offset[1], offset[2]), _quat_from_rotation_vector(offset[3:]))
         return compose(hold.child_at_attach, invert(displacement))
 
 
@@ -415,7 +417,7 @@ def _integrate(value: float, rate: float, load: float, inertia: float, dt: float
     return value, rate
 
 
-def _quat_from_rotation_vector(vector) -> tuple:
+def _quat_from_rotation_vector(vector: Sequence[float]) -> Quat:
     angle = math.sqrt(sum(c * c for c in vector))
     if angle < 1e-12:
         return 0.0, 0.0, 0.0, 1.0

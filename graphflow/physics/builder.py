@@ -105,13 +105,14 @@ class SceneBuilder:
             pose = compose(frame, single.pose)
             if single.kind == "plane":   # a large box: PyBullet's plane shape lets contacts sink and creep
                 half_extents, centre = plane_box(single.axis)
-                pose = compose(pose, (tuple(centre), (0.0, 0.0, 0.0, 1.0)))
+                pose = compose(pose, ((centre[0], centre[1], centre[2]), (0.0, 0.0, 0.0, 1.0)))
                 return p.createCollisionShape(p.GEOM_BOX, halfExtents=half_extents,
                                               collisionFramePosition=pose[0], collisionFrameOrientation=pose[1])
             return p.createCollisionShape(p.GEOM_MESH, vertices=[list(v) for v in single.points],
                                           indices=[i for tri in single.triangles for i in tri],
                                           collisionFramePosition=pose[0], collisionFrameOrientation=pose[1])
-        kinds, radii, half_extents, lengths, files, positions, orientations = [], [], [], [], [], [], []
+        kinds, radii, lengths, files, positions, orientations = [], [], [], [], [], []
+        box_extents: list[list[float]] = []
         for shape in shapes:
             if shape.kind in ("plane", "triangle_mesh"):
                 self._unsupported(shape.path, f"a {shape.kind.replace('_', ' ')} collider combined with other shapes")
@@ -130,7 +131,7 @@ class SceneBuilder:
                 kind, file_name = p.GEOM_MESH, self._hull_file(shape)
             kinds.append(kind)
             radii.append(radius)
-            half_extents.append(extents)
+            box_extents.append(extents)
             lengths.append(length)
             files.append(file_name)
             positions.append(list(pose[0]))
@@ -138,7 +139,7 @@ class SceneBuilder:
         if not kinds:
             return -1
         try:
-            return p.createCollisionShapeArray(shapeTypes=kinds, radii=radii, halfExtents=half_extents,
+            return p.createCollisionShapeArray(shapeTypes=kinds, radii=radii, halfExtents=box_extents,
                                                lengths=lengths, fileNames=files,
                                                meshScales=[[1.0, 1.0, 1.0]] * len(kinds),
                                                collisionFramePositions=positions,
@@ -184,8 +185,8 @@ class SceneBuilder:
     def _build_free_body(self, body: Body):
         p = self.p
         dynamic = body.kind == "dynamic"
-        inertial = (body.mass.center_of_mass, body.mass.principal_axes) if dynamic else IDENTITY_POSE
-        mass = body.mass.mass if dynamic else 0.0
+        inertial = (body.mass_properties.center_of_mass, body.mass_properties.principal_axes) if dynamic else IDENTITY_POSE
+        mass = body.mass_properties.mass if dynamic else 0.0
         body_id = p.createMultiBody(baseMass=mass, baseCollisionShapeIndex=self._collision_shape(body.shapes),
                                     basePosition=body.pose[0], baseOrientation=body.pose[1],
                                     baseInertialFramePosition=inertial[0],
@@ -254,7 +255,7 @@ class SceneBuilder:
         anchor_joint = world_joints[0]
         root_body = None
         if anchor_joint.kind == "fixed":
-            root_body = anchor_joint.body1 if anchor_joint.body0 is None else anchor_joint.body0
+            root_body = _body_on_world_joint(anchor_joint)
         for extra in world_joints[1:]:
             self._unsupported(extra.path, "a second joint to the world in one articulation (closed loop): "
                                           "simulated as a constraint (no limits, no drive)")
@@ -271,10 +272,10 @@ class SceneBuilder:
         tree.visited = {root_body} if root_body else set()
         start: str | None = root_body
         if anchor_joint is not None and root_body is None:
-            child = anchor_joint.body1 if anchor_joint.body0 is None else anchor_joint.body0
-            tree.order.append((child, anchor_joint, None, anchor_joint.body1 == child))
-            tree.visited.add(child)
-            start = child
+            anchored = _body_on_world_joint(anchor_joint)
+            tree.order.append((anchored, anchor_joint, None, anchor_joint.body1 == anchored))
+            tree.visited.add(anchored)
+            start = anchored
         remaining = [j for j in joints if j is not anchor_joint]
         stack: list[str] = [start] if start is not None else []
         while stack:
@@ -308,8 +309,8 @@ class SceneBuilder:
             links.link_index[child] = index
             origin = compose(links.link_from_prim[parent], parent_side) if parent is not None else parent_side
             body = description.bodies[child]
-            inertial = compose(links.link_from_prim[child], (body.mass.center_of_mass, body.mass.principal_axes))
-            arrays["masses"].append(body.mass.mass)
+            inertial = compose(links.link_from_prim[child], (body.mass_properties.center_of_mass, body.mass_properties.principal_axes))
+            arrays["masses"].append(body.mass_properties.mass)
             arrays["shapes"].append(self._collision_shape(body.shapes, links.link_from_prim[child]))
             arrays["visuals"].append(-1)
             arrays["positions"].append(list(origin[0]))
@@ -330,8 +331,8 @@ class SceneBuilder:
         base_pose = self.description.bodies[tree.root_body].pose if tree.root_body else IDENTITY_POSE
         if tree.root_body is not None:
             root = self.description.bodies[tree.root_body]
-            links.base_mass = 0.0 if tree.fixed_base else root.mass.mass
-            links.base_inertial = (root.mass.center_of_mass, root.mass.principal_axes)
+            links.base_mass = 0.0 if tree.fixed_base else root.mass_properties.mass
+            links.base_inertial = (root.mass_properties.center_of_mass, root.mass_properties.principal_axes)
             base_shape = self._collision_shape(root.shapes)
         else:
             base_shape = -1
@@ -363,7 +364,7 @@ class SceneBuilder:
             inertial_in_prim = compose(invert(links.link_from_prim[child]),
                                        (tuple(arrays["inertial_positions"][index]),
                                         tuple(arrays["inertial_orientations"][index])))
-            self._register(body, body_id, index, inertial_in_prim, articulation.path, body.mass.mass)
+            self._register(body, body_id, index, inertial_in_prim, articulation.path, body.mass_properties.mass)
 
     def _initialise_dofs(self, body_id: int, dofs: list) -> tuple["DriveSpec | None", ...]:
         """Initial joint positions and velocities, motors off, limits; the drive of each DOF."""
@@ -381,7 +382,7 @@ class SceneBuilder:
             if math.isfinite(joint.lower) or math.isfinite(joint.upper):
                 low, high = sorted((sign * joint.lower, sign * joint.upper))
                 p.changeDynamics(body_id, index, jointLowerLimit=max(low, -1e10), jointUpperLimit=min(high, 1e10))
-            drives.append(DriveSpec.for_joint(joint) if joint.drive else None)
+            drives.append(DriveSpec.for_joint(joint))
         return tuple(drives)
 
     # -- joints between free bodies -------------------------------------------------------
@@ -418,9 +419,9 @@ class SceneBuilder:
                                           childFrameOrientation=child_frame[1]))
         else:  # spherical: one pin; revolute: two pins on the axis
             offsets = [0.0] if joint.kind == "spherical" else [-REVOLUTE_PIN_HALF_SPAN, REVOLUTE_PIN_HALF_SPAN]
-            axis = AXIS_VECTORS[joint.axis]
+            pin_axis = AXIS_VECTORS[joint.axis]
             for offset in offsets:
-                pin = ((axis[0] * offset, axis[1] * offset, axis[2] * offset), (0.0, 0.0, 0.0, 1.0))
+                pin = ((pin_axis[0] * offset, pin_axis[1] * offset, pin_axis[2] * offset), (0.0, 0.0, 0.0, 1.0))
                 parent_pin, child_pin = compose(parent_frame, pin), compose(child_frame, pin)
                 ids.append(p.createConstraint(parent_id, parent_link, child_id, child_link, p.JOINT_POINT2POINT,
                                               [0.0, 0.0, 0.0], parentFramePosition=parent_pin[0],
@@ -455,6 +456,14 @@ class _Links:
     dofs: list = field(default_factory=list)          # (link index, joint, sign) of each movable joint
     base_mass: float = 0.0
     base_inertial: Pose = IDENTITY_POSE
+
+
+def _body_on_world_joint(joint: Joint) -> str:
+    """The body a joint to the world moves (the import refuses a joint with no body on either side)."""
+    body = joint.body1 if joint.body0 is None else joint.body0
+    if body is None:
+        raise ValueError(f"{joint.path} joins no body")
+    return body
 
 
 def _cone_points(shape: Shape):

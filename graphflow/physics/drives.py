@@ -96,27 +96,27 @@ class JointControl:
             motors.append(motor)
         load, cancelling = self._joint_gravity(articulation, raw_positions)
         if all(motor is not None for motor in motors):     # every DOF a motor (the UR10): no torque law to solve
-            efforts, accelerations = targets.efforts, None
+            efforts, accelerations = targets.efforts, []     # no accelerations needed: every DOF is a motor
         else:
-            inertia = np.asarray(inertia)
+            mass_matrix = np.asarray(inertia)
             if -1.0 in signs:   # signs flip rows and columns of M alike, so M in USD coordinates is S M S
-                inertia = inertia * np.outer(signs, signs)
+                mass_matrix = mass_matrix * np.outer(signs, signs)
             torque_drives = [drive if motor is None else None for drive, motor in zip(drives, motors)]
             held = [None if motor is None else (motor - velocity) / dt for motor, velocity in zip(motors, velocities)]
-            efforts, accelerations = drive_efforts(torque_drives, targets, positions, velocities, inertia,
-                                                   np.array(signs) * load, dt, held)
-            efforts, accelerations = efforts.tolist(), accelerations.tolist()
+            effort_array, acceleration_array = drive_efforts(torque_drives, targets, positions, velocities,
+                                                             mass_matrix, np.array(signs) * load, dt, held)
+            efforts, accelerations = effort_array.tolist(), acceleration_array.tolist()
         velocity_targets, forces = [], []
-        for dof, (lower, upper) in enumerate(self.limits[articulation.path]):
+        for dof, ((lower, upper), drive) in enumerate(zip(self.limits[articulation.path], drives)):
             motor = motors[dof]
             velocity = motor if motor is not None else velocities[dof] + dt * accelerations[dof]
             stopped = min(max(velocity, (lower - positions[dof]) / dt), (upper - positions[dof]) / dt)
             if stopped != velocity:
                 velocity_targets.append(signs[dof] * stopped)
                 forces.append(MOTOR_MAX_FORCE)
-            elif motor is not None:
+            elif motor is not None and drive is not None:     # a motor is only made for a drive
                 velocity_targets.append(signs[dof] * motor)
-                forces.append(min(drives[dof].max_force, MOTOR_MAX_FORCE))
+                forces.append(min(drive.max_force, MOTOR_MAX_FORCE))
             else:
                 velocity_targets.append(0.0)
                 forces.append(0.0)

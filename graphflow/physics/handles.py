@@ -42,8 +42,11 @@ class DriveSpec:
     upper: float = float("inf")
 
     @classmethod
-    def for_joint(cls, joint: Joint) -> "DriveSpec":
+    def for_joint(cls, joint: Joint) -> "DriveSpec | None":
+        """The joint's drive as built, None for an undriven joint."""
         drive = joint.drive
+        if drive is None:
+            return None
         return cls(drive.stiffness, drive.damping, drive.max_force, drive.acceleration, joint.max_velocity,
                    joint.lower, joint.upper)
 

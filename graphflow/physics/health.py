@@ -6,6 +6,7 @@ or two PyBullet calls per multibody) covers every body of the stage.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 from graphflow.executor import GraphRuntimeError
 from graphflow.world import WorldError
@@ -18,7 +19,7 @@ class NonFiniteState(GraphRuntimeError, WorldError):
 def health_plan(scene) -> list[tuple[int, str | None, tuple[int, ...], tuple[str, ...]]]:
     """Per dynamic multibody: (body id, its base's prim or None for a fixed base, joint indices, the prims
     they move)."""
-    plan: dict[int, list] = {}
+    plan: dict[int, list[Any]] = {}
     for path, handle in sorted(scene.bodies.items()):
         if handle.kind != "dynamic":
             continue
@@ -27,10 +28,10 @@ def health_plan(scene) -> list[tuple[int, str | None, tuple[int, ...], tuple[str
         if handle.link == -1 and not fixed:         # a fixed base does not move
             entry[1] = path
     for articulation in scene.articulations.values():
-        entry = plan.get(articulation.body_id)
-        if entry is not None:
-            entry[2] = articulation.joint_indices
-            entry[3] = tuple(scene.by_id.get((articulation.body_id, index), articulation.path)
+        moving = plan.get(articulation.body_id)
+        if moving is not None:
+            moving[2] = articulation.joint_indices
+            moving[3] = tuple(scene.by_id.get((articulation.body_id, index), articulation.path)
                              for index in articulation.joint_indices)
     return [(body_id, base, tuple(joints), tuple(paths)) for body_id, base, joints, paths in plan.values()]
 

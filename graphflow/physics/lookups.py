@@ -7,13 +7,29 @@ cleared on every rebuild).
 """
 from __future__ import annotations
 
-from graphflow.physics.handles import ArticulationHandle, BodyHandle
+from typing import Any, Callable, Iterable
+
+from graphflow.physics.handles import ArticulationHandle, BodyHandle, BuiltScene
 from graphflow.poses import IDENTITY_POSE, Pose, compose, relative
+from graphflow.usd.description import StageDescription
 from graphflow.world import WorldError
+
+# body_poses' plan for one list of paths (see _pose_plan); the inertial poses are PyBullet's tuples
+PosePlan = tuple[list[tuple[int, int]], list[tuple[int, list[int], list[int]]], list[Pose],
+                 list[tuple[Any, Pose] | None]]
 
 
 class SceneLookups:
     """Finding bodies, colliders and articulations by prim path; their world poses."""
+
+    # what the mixin uses of the world (``PyBulletWorld`` sets them)
+    client: Any                                   # a pybullet BulletClient: pybullet has no type information
+    description: StageDescription
+    stage: Any                                    # the pxr Usd.Stage or None: pxr has no type information
+    scene: BuiltScene
+    _offsets: dict[str, tuple[str | None, Pose]]
+    _pose_plans: dict[tuple[str, ...], PosePlan]
+    prim_pose: Callable[[str], Pose]
 
     # -- bodies ----------------------------------------------------------------------------------
     def _body(self, prim_path: str) -> BodyHandle:
@@ -86,7 +102,7 @@ class SceneLookups:
     def _body_pose(self, handle: BodyHandle) -> Pose:
         return compose(self._inertial_pose(handle), handle.prim_in_inertial)
 
-    def body_poses(self, paths) -> list[Pose]:
+    def body_poses(self, paths: Iterable[str]) -> list[Pose]:
         """World poses of rigid-body prims, the same numbers as ``prim_pose`` gives one at a time.
 
         One ``getLinkStates`` call per multibody instead of a call per link, planned once per
@@ -113,7 +129,7 @@ class SceneLookups:
             poses.append(previous[1])
         return poses
 
-    def _pose_plan(self, paths: tuple[str, ...]):
+    def _pose_plan(self, paths: tuple[str, ...]) -> PosePlan:
         """(base index and body id pairs, (body id, links, indices) per multibody, each prim frame in its inertial
         frame, each body's last (inertial pose, pose) read: None until the first)."""
         handles = []
@@ -143,8 +159,9 @@ class SceneLookups:
         transform = Gf.Transform(UsdGeom.XformCache().GetLocalToWorldTransform(prim))
         scale = self.description.meters_per_unit
         imaginary = transform.GetRotation().GetQuat().GetImaginary()
-        world = (tuple(float(c) * scale for c in transform.GetTranslation()),
-                 (imaginary[0], imaginary[1], imaginary[2], transform.GetRotation().GetQuat().GetReal()))
+        x, y, z = (float(c) * scale for c in transform.GetTranslation())
+        world: Pose = ((x, y, z),
+                       (imaginary[0], imaginary[1], imaginary[2], transform.GetRotation().GetQuat().GetReal()))
         ancestor = prim.GetParent()
         while ancestor and not ancestor.IsPseudoRoot() and str(ancestor.GetPath()) not in self.scene.bodies:
             ancestor = ancestor.GetParent()

@@ -14,11 +14,15 @@ import shutil
 import subprocess
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING, Generator
 
 import numpy as np
 import pybullet
 
 from graphflow.errors import BadInput
+
+if TYPE_CHECKING:
+    from PIL import Image
 
 FIELD_OF_VIEW = 50.0            # degrees, vertical
 NEAR, FAR = 0.01, 100.0         # m, clipping planes
@@ -120,7 +124,8 @@ def framed_camera(client, camera: Camera) -> Camera:
     bounds = scene_bounds(client)
     low, high = bounds if bounds is not None else (np.full(3, -0.5), np.full(3, 0.5))
     radius = max(0.25, float(np.linalg.norm(high - low)) / 2)
-    target = camera.target if camera.target is not None else tuple(float(v) for v in (low + high) / 2)
+    centre = (low + high) / 2
+    target = camera.target if camera.target is not None else (float(centre[0]), float(centre[1]), float(centre[2]))
     distance = camera.distance if camera.distance is not None else 1.15 * radius / math.sin(math.radians(FIELD_OF_VIEW / 2))
     return Camera(target, distance, camera.yaw, camera.pitch)
 
@@ -211,8 +216,8 @@ class VideoRecorder:
         self.camera = framed_camera(world.client, camera)
         self.colours = body_colours(world)
         self.frame_count = 0
-        self._gif_frames = []
-        self._encoder = None
+        self._gif_frames: list[Image.Image] = []
+        self._encoder: subprocess.Popen[bytes] | Generator[None, bytes | None, None] | None = None
         self._write(render_frame(world.client, size, self.camera, self.colours))
 
     def capture(self) -> None:
@@ -238,6 +243,7 @@ class VideoRecorder:
         else:
             encoder = self._mp4_encoder()
             if isinstance(encoder, subprocess.Popen):
+                assert encoder.stdin is not None     # started with stdin=PIPE
                 encoder.stdin.write(frame.tobytes())
             else:
                 encoder.send(frame.tobytes())
@@ -267,6 +273,7 @@ class VideoRecorder:
             self._gif_frames = []
         elif self._encoder is not None:
             if isinstance(self._encoder, subprocess.Popen):
+                assert self._encoder.stdin is not None     # started with stdin=PIPE
                 self._encoder.stdin.close()
                 if self._encoder.wait() != 0:
                     raise RecordingError(f"{self.path}: ffmpeg failed to encode the video")

@@ -73,7 +73,7 @@ def simulate_report(stage_path: str, seconds: float) -> dict:
             for dof, drive in enumerate(articulation.drives):
                 if drive is not None:
                     drive_errors[articulation.joint_paths[dof]] = abs(positions[dof] - targets[dof])
-    worst = max(free, key=moved.get) if free else None
+    worst = max(free, key=moved.__getitem__) if free else None
     return {
         "seconds": steps * world.time_step,
         "steps": steps,

@@ -344,7 +344,7 @@ class PyBulletWorld(SceneLookups):
         for index in range(0, len(starts), pybullet.MAX_RAY_INTERSECTION_BATCH_SIZE):
             hits.extend(self.client.rayTestBatch(starts[index:index + pybullet.MAX_RAY_INTERSECTION_BATCH_SIZE],
                                                  ends[index:index + pybullet.MAX_RAY_INTERSECTION_BATCH_SIZE]))
-        result = []
+        result: list[RayHit | None] = []
         for body_id, link, fraction, position, normal in hits:
             if body_id < 0:
                 result.append(None)
@@ -354,7 +354,8 @@ class PyBulletWorld(SceneLookups):
         return result
 
     def gravity(self) -> tuple[float, float, float]:
-        return tuple(float(g) for g in self.description.gravity)
+        x, y, z = self.description.gravity
+        return float(x), float(y), float(z)
 
     def contacts(self, path: str) -> list[Contact]:
         handle = self._body(path)

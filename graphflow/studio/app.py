@@ -165,7 +165,7 @@ def build_app(session: Session, hosts: set[str]) -> Guard:
         path = session.folder.resolve(request.query_params.get("path", ""))
         return JSONResponse({"stages": await asyncio.to_thread(stage_choices, path, session.folder.root)})
 
-    async def bad_input(request: Request, error: BadInput):
+    async def bad_input(request: Request, error: Exception):     # Starlette calls it for BadInput only
         return JSONResponse({"error": str(error), "status": 400}, status_code=400)
 
     async def not_found(request: Request, error):

@@ -14,6 +14,7 @@ import json
 import re
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from graphflow.document import GraphDocument, dumps, parse_document
 from graphflow.errors import BadInput
@@ -51,7 +52,7 @@ def palette() -> dict:
     ``connects[source][destination]`` is ``graphflow.types.can_connect`` over every port type the
     palette names, so the page offers exactly the connections the compiler accepts.
     """
-    types = []
+    types: list[dict[str, Any]] = []
     for node_type in sorted(default_registry().types(), key=lambda node_type: node_type.spec.id):
         spec = node_type.spec
         types.append({"id": spec.id, "version": spec.version, "uiName": spec.ui_name or spec.id.rsplit(".", 1)[-1],

@@ -108,7 +108,7 @@ def merge_parts(older: dict, newer: dict) -> dict:
     For a live loop that merges frames waiting for a slow socket: ``{**older, **newer}`` would drop
     the older frame's lane changes and the poses of bodies that moved only in it.
     """
-    lanes = {"phases": {key: list(changes) for key, changes in older["lanes"]["phases"].items()},
+    lanes: dict[str, dict[str, Any]] = {"phases": {key: list(changes) for key, changes in older["lanes"]["phases"].items()},
              "grippers": {path: {name: list(changes) for name, changes in fields.items()}
                           for path, fields in older["lanes"]["grippers"].items()}}
     for key, changes in newer["lanes"]["phases"].items():

@@ -67,7 +67,7 @@ class FrameSampler:
 
     def _log(self, instance) -> list:
         """Lines logged since the last frame, oldest first: [tick, node, level, message]."""
-        lines = []
+        lines: list[list[object]] = []
         for event in reversed(instance.events):
             if event.tick <= self._logged_tick or len(lines) == MAX_LOG_LINES:
                 break

@@ -31,12 +31,13 @@ logger = logging.getLogger(__name__)
 class LiveRun:
     """One graph file running live; ``command()`` from any thread, frames to *publish* from the run's thread."""
 
-    def __init__(self, path: Path, publish: Callable[[dict], None]):
+    def __init__(self, path: Path, publish: Callable[[dict], object]):
         self.path, self.publish = path, publish
         self.keys, self.pad = BrowserKeys(), BrowserPad()
         self._commands: queue.Queue = queue.Queue()
         self._thread = threading.Thread(target=self._main, name=f"graphflow-live-{path.name}", daemon=True)
-        self.playing, self.speed = False, 1.0   # speed None: as fast as it goes
+        self.playing = False
+        self.speed: float | None = 1.0     # None: as fast as it goes
         self._thread.start()
 
     def command(self, name: str, **fields) -> None:
@@ -75,7 +76,7 @@ class LiveRun:
         self.sampler = FrameSampler(self.simulation)
         self.scene = FrameScene(self.simulation)
         self.limit = self.checked.tick_limit()
-        self.ended = None
+        self.ended: dict[str, object] | None = None
         self.publish({"type": "start", "run": run_data(_tick_zero(self.simulation, str(self.path)), document),
                       "limit": self.limit})
 

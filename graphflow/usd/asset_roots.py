@@ -55,7 +55,12 @@ def _folder_of(loaded) -> Path:
         loaded = loaded()
     if isinstance(loaded, ModuleType):
         paths = list(getattr(loaded, "__path__", []))
-        return Path(paths[0]) if paths else Path(loaded.__file__).parent
+        if paths:
+            return Path(paths[0])
+        file = getattr(loaded, "__file__", None)      # a built-in module has none
+        if file is None:
+            raise StageError(f"module {loaded.__name__} has no file, so no folder of assets")
+        return Path(file).parent
     return Path(os.fspath(loaded))
 
 

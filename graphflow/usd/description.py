@@ -10,6 +10,7 @@ seconds, radians (USD's degrees are converted), quaternions (x, y, z, w).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TypedDict
 
 from graphflow.poses import AXIS_VECTORS, IDENTITY_POSE, Pose, Quat, Vec3, compose, relative, twist_angle
 
@@ -41,6 +42,15 @@ class Shape:
     collision_enabled: bool = True
 
 
+class ShapeCommon(TypedDict):
+    """The ``Shape`` fields every kind of collider has, as keyword arguments (the importer passes them on)."""
+
+    path: str
+    pose: Pose
+    material: Material
+    collision_enabled: bool
+
+
 @dataclass(frozen=True)
 class MassProperties:
     mass: float
@@ -63,6 +73,13 @@ class Body:
     gravity_enabled: bool = True            # physxRigidBody:disableGravity
     linear_damping: float = 0.0             # PhysX defaults
     angular_damping: float = 0.05
+
+    @property
+    def mass_properties(self) -> MassProperties:
+        """The mass properties of a dynamic or kinematic body; the import gives every one of them some."""
+        if self.mass is None:
+            raise ValueError(f"{self.path} is a static collider: it has no mass")
+        return self.mass
 
 
 @dataclass(frozen=True)

@@ -47,9 +47,9 @@ def graphflow_type(usd_type: str) -> str | None:
     if base[-1].isdigit() and base[:-1] in ("double", "float", "half", "int"):   # double3, int2
         return f"{base[:-1]}[{base[-1]}]{suffix}"
     if base[-2:-1].isdigit() and base[-1] in "dfh" and base[:-2] in _ROLES:      # vector3d, point3f, texCoord2f
-        size, letter, role = base[-2], base[-1], _ROLES[base[:-2]]
+        components, letter, role = base[-2], base[-1], _ROLES[base[:-2]]
         scalar = {"d": "double", "f": "float", "h": "half"}[letter]
-        return f"{role}{letter}[{size}]{suffix}" if role else f"{scalar}[{size}]{suffix}"
+        return f"{role}{letter}[{components}]{suffix}" if role else f"{scalar}[{components}]{suffix}"
     return None
 
 

@@ -44,9 +44,9 @@ def ignored_authoring(stage) -> list[tuple[str, str]]:
         names = [attribute.GetName() for attribute in prim.GetAuthoredAttributes()]
         by_source: dict[str, list[str]] = {}
         for name in names:
-            source = _source(name)
-            if source is not None:
-                by_source.setdefault(source, []).append(name)
+            owner = _source(name)
+            if owner is not None:
+                by_source.setdefault(owner, []).append(name)
         if by_source:
             parts.append(f"{' and '.join(sorted(by_source))} attributes "
                          + ", ".join(sorted(name for group in by_source.values() for name in group)))

@@ -8,8 +8,9 @@ colliders (a frame, a converted MJCF site) gets a documented small mass, named.
 from __future__ import annotations
 
 import math
+from typing import Any, Callable, NoReturn
 
-from graphflow.poses import AXIS_VECTORS, quat_normalize
+from graphflow.poses import AXIS_VECTORS, Vec3, quat_normalize
 from graphflow.usd.authored_values import inertia_on_triangle
 from graphflow.usd.description import Body, MassProperties, Shape
 
@@ -25,6 +26,12 @@ def quat_of(gf_quat) -> tuple[float, float, float, float]:
 
 class MassPropertiesMixin:
     """The stage importer's mass-property reading (it provides mpu, xform_cache, _vec, _fail, _unsupported)."""
+
+    mpu: float
+    xform_cache: Any                               # a pxr UsdGeom.XformCache: pxr has no type information
+    _vec: Callable[..., Vec3]                      # (vector, scale=mpu) -> metres
+    _fail: Callable[[str], NoReturn]
+    _unsupported: Callable[[str, str], None]
 
     def _mass_properties(self, prim, body: Body) -> MassProperties:
         """Mass, centre of mass and inertia by USD's precedence rules (MassAPI on body, colliders, materials).
@@ -94,12 +101,12 @@ class MassPropertiesMixin:
             return list(body.shapes)
         scale = Gf.Transform(Gf.Matrix4d(self.xform_cache.GetLocalToWorldTransform(prim))).GetScale()
         scale = tuple(abs(float(c)) * self.mpu for c in scale)
-        common = dict(path=str(prim.GetPath()), pose=((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)))
+        path, origin = str(prim.GetPath()), ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))
         if prim.IsA(UsdGeom.Cube):
             half = 0.5 * float(UsdGeom.Cube(prim).GetSizeAttr().Get())
-            return [Shape(kind="box", half_extents=tuple(half * c for c in scale), **common)]
+            return [Shape(path, "box", origin, half_extents=(half * scale[0], half * scale[1], half * scale[2]))]
         if prim.IsA(UsdGeom.Sphere) and scale[0] == scale[1] == scale[2]:
-            return [Shape(kind="sphere", radius=float(UsdGeom.Sphere(prim).GetRadiusAttr().Get()) * scale[0], **common)]
+            return [Shape(path, "sphere", origin, radius=float(UsdGeom.Sphere(prim).GetRadiusAttr().Get()) * scale[0])]
         return []
 
 
@@ -129,7 +136,8 @@ def unit_density_properties(shape: Shape):
         else:
             volume = math.pi * r * r * h / 3.0
             axial, transverse = 0.3 * volume * r * r, volume * (3.0 * r * r / 20.0 + 3.0 * h * h / 80.0)
-            center = tuple(-0.25 * h * c for c in AXIS_VECTORS[shape.axis])
+            x, y, z = AXIS_VECTORS[shape.axis]
+            center = (-0.25 * h * x, -0.25 * h * y, -0.25 * h * z)
         inertia = tuple(axial if c else transverse for c in AXIS_VECTORS[shape.axis])
         return volume, inertia, center
     # meshes: their bounding box

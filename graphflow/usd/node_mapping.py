@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import json
 import math
+from typing import Any, Callable
 
 RENDER_PRODUCT = "needs Kit's RTX renderer (render products do not exist headless)"
 RENDERED_IMAGE = "processes rendered images (needs Kit's renderer)"
@@ -60,7 +61,7 @@ RENDERING_NODES = {f"{prefix}.{name}": reason for prefixes, names in _RENDERING.
 SURFACE_GRIPPER_IDS = ("isaacsim.robot.surface_gripper.SurfaceGripper", "omni.isaac.surface_gripper.SurfaceGripper")
 LEGACY_GRIPPER_ID = "graphflow.LegacySurfaceGripper"
 # v1 input -> (LegacySurfaceGripper input, conversion)
-LEGACY_GRIPPER_INPUTS = {
+LEGACY_GRIPPER_INPUTS: dict[str, tuple[str, Callable[[Any], Any]]] = {
     "GripThreshold": ("gripThreshold", float),
     "ForceLimit": ("forceLimit", float),
     "TorqueLimit": ("torqueLimit", float),

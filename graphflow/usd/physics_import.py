@@ -43,6 +43,7 @@ from graphflow.usd.description import (
     Joint,
     Material,
     Shape,
+    ShapeCommon,
     StageDescription,
     SurfaceGripper,
     in_path_order,
@@ -116,6 +117,8 @@ def _finite_or_inf(value: float) -> float:
 
 
 class _Importer(MassPropertiesMixin):
+    description: StageDescription          # made by run(), which every other method serves
+
     def __init__(self, stage, label: str):
         from pxr import UsdGeom
 
@@ -124,7 +127,6 @@ class _Importer(MassPropertiesMixin):
         self.mpu = float(UsdGeom.GetStageMetersPerUnit(stage))
         self.up_axis = str(UsdGeom.GetStageUpAxis(stage))
         self.xform_cache = UsdGeom.XformCache()
-        self.description: StageDescription | None = None
 
     # -- helpers -----------------------------------------------------------------
     def _fail(self, message: str):
@@ -294,7 +296,7 @@ class _Importer(MassPropertiesMixin):
         path = str(desc.primPath)
         pose = (self._vec(desc.localPos), quat_of(desc.localRot))
         material = self.materials.get(str(desc.materials[0]), Material()) if len(desc.materials) else Material()
-        common = dict(path=path, pose=pose, material=material, collision_enabled=bool(desc.collisionEnabled))
+        common = ShapeCommon(path=path, pose=pose, material=material, collision_enabled=bool(desc.collisionEnabled))
         if kind == "box":
             return Shape(kind="box", half_extents=self._vec(desc.halfExtents), **common)
         if kind == "sphere":
@@ -309,7 +311,7 @@ class _Importer(MassPropertiesMixin):
             return Shape(kind="plane", axis=_enum_name(desc.axis), **common)
         return self._mesh_shape(desc, body_path, common)
 
-    def _mesh_shape(self, desc, body_path, common) -> Shape | None:
+    def _mesh_shape(self, desc, body_path: str | None, common: ShapeCommon) -> Shape | None:
         from pxr import UsdGeom
 
         path = common["path"]
@@ -325,7 +327,8 @@ class _Importer(MassPropertiesMixin):
         if body_path is None and approximation in ("none", ""):
             counts = mesh.GetFaceVertexCountsAttr().Get() or []
             indices = mesh.GetFaceVertexIndicesAttr().Get() or []
-            triangles, cursor = [], 0
+            triangles: list[tuple[int, int, int]] = []
+            cursor = 0
             for count in counts:
                 face = indices[cursor:cursor + count]
                 cursor += count

@@ -68,7 +68,9 @@ def remap_table(start: str | os.PathLike | None = None) -> RemapTable:
 def project_folder_setting(start: str | os.PathLike, name: str) -> Path | None:
     """A folder under ``[assets]`` in the nearest graphflow.toml, relative to that file (None when absent)."""
     project = _project_file(Path(start))
-    value = _read(project).get("assets", {}).get(name) if project is not None else None
+    if project is None:
+        return None
+    value = _read(project).get("assets", {}).get(name)
     if value is None:
         return None
     if not isinstance(value, str):

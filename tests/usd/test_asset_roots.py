@@ -99,6 +99,15 @@ def test_packages_register_asset_roots_by_entry_point(acme_package, tmp_path, ca
     assert "  @acme/arm.usda@" in capsys.readouterr().out.splitlines()
 
 
+def test_an_entry_point_naming_a_built_in_module_is_skipped_with_the_reason(acme_package, caplog):
+    (acme_package.parent / "acme_robots-1.0.dist-info" / "entry_points.txt").write_text(
+        "[graphflow.assets]\nacme = acme_robots\nbuiltin = sys\n")
+    caplog.set_level(logging.WARNING, logger="graphflow.usd.asset_roots")
+    assert "builtin" not in roots.asset_roots()
+    assert "asset root builtin (sys) skipped: StageError: module sys has no file, so no folder of assets" in caplog.text
+    assert roots.asset_roots()["acme"] == acme_package     # the other package's root still comes through
+
+
 @pytest.mark.slow
 def test_new_stage_ur10_writes_a_cell_that_passes_its_checks_as_written(tmp_path, monkeypatch, capsys):
     (tmp_path / "project").mkdir()
