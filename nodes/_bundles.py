@@ -14,6 +14,7 @@ import math
 import re
 
 from graphflow.bundles import DERIVED, PRIM_INTERNAL, Bundle, BundleAttribute
+from graphflow.node_api import NodeDb
 from graphflow.types import parse_type
 from graphflow.world import WorldError
 
@@ -49,7 +50,7 @@ def filtered(bundle: Bundle, patterns: str) -> Bundle:
     return Bundle(tuple(a for a in bundle if a.name in kept or wildcard(patterns, a.name)), bundle.children)
 
 
-def read(db, path: str, patterns: str, bounding_box: bool = False, time: float | None = None) -> Bundle:
+def read(db: NodeDb, path: str, patterns: str, bounding_box: bool = False, time: float | None = None) -> Bundle:
     """One prim's bundle through the world, attributes filtered by *patterns*; a refusal fails the node."""
     try:
         return filtered(db.world.read_prim(path, bounding_box, time), patterns)
@@ -57,12 +58,12 @@ def read(db, path: str, patterns: str, bounding_box: bool = False, time: float |
         db.error(str(error))
 
 
-def read_all(db, paths, patterns: str, bounding_box: bool = False, time: float | None = None) -> Bundle:
+def read_all(db: NodeDb, paths, patterns: str, bounding_box: bool = False, time: float | None = None) -> Bundle:
     """A bundle with one child bundle per prim of *paths*, in order (Kit's multiple prims in a bundle)."""
     return Bundle((), tuple(read(db, path, patterns, bounding_box, time) for path in paths))
 
 
-def search(db, roots: tuple[str, ...], path_pattern: str, type_pattern: str) -> list[str]:
+def search(db: NodeDb, roots: tuple[str, ...], path_pattern: str, type_pattern: str) -> list[str]:
     """Prims at or under *roots* (the stage's root when none) whose path and type match, in stage order."""
     stage = db.world.stage
     if stage is None:
@@ -85,7 +86,7 @@ def _descendants(prim):
         yield from _descendants(child)
 
 
-def attribute(db, bundle: Bundle, name: str) -> BundleAttribute:
+def attribute(db: NodeDb, bundle: Bundle, name: str) -> BundleAttribute:
     """The attribute *name* of *bundle*, or the node fails naming what the bundle holds."""
     found = bundle.get(name)
     if found is None:
@@ -94,7 +95,7 @@ def attribute(db, bundle: Bundle, name: str) -> BundleAttribute:
     return found
 
 
-def write(db, path: str, bundle: Bundle, patterns: str = "*") -> None:
+def write(db: NodeDb, path: str, bundle: Bundle, patterns: str = "*") -> None:
     """Write the attributes of *bundle* that *patterns* match to the prim *path* through the world.
 
     The prim marks (sourcePrimPath, sourcePrimType) and what a reader derives (worldMatrix, bbox*) are no

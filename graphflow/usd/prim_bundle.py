@@ -115,6 +115,8 @@ def _bounding_box(prim) -> list[BundleAttribute]:
                                                        UsdGeom.Tokens.proxy])
     box = cache.ComputeUntransformedBound(prim)
     box_range = box.GetRange()
+    low: tuple[float, ...]
+    high: tuple[float, ...]
     if box_range.IsEmpty():
         low = high = (0.0, 0.0, 0.0)
     else:
