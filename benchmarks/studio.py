@@ -13,7 +13,8 @@ other work the wall-clock ratio is noisy, so each watcher also gives cpu_ratio: 
 per tick / the studio process's (every thread) per tick during the live run, what the server side
 costs whatever else runs. With a browser: the CPU Chromium used during the drawn and undrawn runs (CPU-seconds per wall second, of this machine's
 cores), and the page's response to input while the pyramid runs live at max speed, from typing into
-the palette's search to the filtered list drawn (median and worst of a few, target under 100 ms).
+the palette's search to the filtered list drawn (median and worst of a few, target under 100 ms); and
+Chromium's cores while the page watches the pyramid play in real time for a few seconds (watching_1x).
 """
 from __future__ import annotations
 
@@ -93,15 +94,19 @@ class _SocketWatcher:
 
     def play(self, ticks: int) -> list[tuple[float, int]]:
         """Play at max speed until a frame at *ticks*: (arrival time, tick) of every frame."""
+        started = time.perf_counter()
         self.socket.send(json.dumps({"command": "play"}))
         while not (message := self._until("frame"))["playing"]:
-            pass   # frames sent before play was taken
-        frames = [(time.perf_counter(), message["tick"])]
+            started = time.perf_counter()   # frames sent before play was taken
+        frames = [(started, 0), (time.perf_counter(), message["tick"])]   # its first frame may have merged ticks into it
         while frames[-1][1] < ticks:
             frames.append((time.perf_counter(), self._until("frame")["tick"]))
         return frames
 
     def reset(self) -> None:
+        # paused first, as the page's watcher does: a run reset while playing plays on, and its frames would be
+        # taken for the next repeat's (a run caught between tick TICKS and its end at 1127 was)
+        self.socket.send(json.dumps({"command": "pause"}))
         self.socket.send(json.dumps({"command": "reset"}))
         self._until("start")
 
@@ -242,6 +247,24 @@ def _input_latency(browser) -> list[float]:
         server.close()
 
 
+def _watching_cores(browser, seconds: float = 3.0) -> float:
+    """Chromium's cores while the drawn page watches the pyramid play live in real time (frames at their steady
+    rate, every panel busy): what watching costs per second, less at the mercy of other load than a wall ratio."""
+    server = _Server(PYRAMID)
+    try:
+        page = _open_live(browser, server)
+        page.select_option("[data-field=speed]", "1")
+        page.click("[data-action=play]")
+        page.wait_for_function("Number(document.querySelector('[data-testid=live-bar]').dataset.tick) > 60", timeout=120000)
+        cpu, started = _chromium_cpu_seconds(), time.perf_counter()
+        time.sleep(seconds)
+        cores = (_chromium_cpu_seconds() - cpu) / (time.perf_counter() - started)
+        page.close()
+        return cores
+    finally:
+        server.close()
+
+
 def _browser():
     try:
         from playwright.sync_api import sync_playwright
@@ -270,7 +293,8 @@ def _with_browser(found, server: _Server, ticks: int, repeats: int, figures: dic
                     visible = measured.ratio
             if PYRAMID.exists():
                 latency = _input_latency(browser)
-                figures.update(input_median=f"{statistics.median(latency):.1f}ms", input_worst=f"{max(latency):.1f}ms")
+                figures.update(input_median=f"{statistics.median(latency):.1f}ms", input_worst=f"{max(latency):.1f}ms",
+                               watching_1x=f"{_watching_cores(browser):.2f}cores")
         finally:
             browser.close()
     return visible

@@ -85,28 +85,44 @@ function PlotLane({ changes, ticks, limits = [] }) {
   );
 }
 
+const nodeOf = (key) => key.slice(0, key.lastIndexOf("."));   // "node.port" -> node
+
 export function laneList(run, pinned) {
   const lanes = [];
   for (const key of run.phases) {
-    if (run.outputs[key]) lanes.push({ id: `phase:${key}`, label: `phase ${key}`, kind: "span", changes: run.outputs[key] });
+    if (run.outputs[key]) lanes.push({ id: `phase:${key}`, label: `phase ${key}`, kind: "span", changes: run.outputs[key],
+                                         node: nodeOf(key) });
   }
   for (const [path, gripper] of Object.entries(run.grippers)) {
     const name = path.split("/").pop();
-    if (gripper.status) lanes.push({ id: `status:${path}`, label: `${name} status`, kind: "status", changes: gripper.status, reasons: gripper.reason || [] });
-    if (gripper.gripped) lanes.push({ id: `held:${path}`, label: `${name} holds`, kind: "span",
+    if (gripper.status) lanes.push({ id: `status:${path}`, label: `${name} status`, kind: "status", changes: gripper.status, reasons: gripper.reason || [],
+                                    gripper: path });
+    if (gripper.gripped) lanes.push({ id: `held:${path}`, label: `${name} holds`, kind: "span", gripper: path,
                                       changes: gripper.gripped.map(([t, v]) => [t, v && v.length ? v.join(", ") : "nothing"]) });
-    if (gripper.force) lanes.push({ id: `force:${path}`, label: `${name} force (N)`, kind: "plot", changes: gripper.force,
+    if (gripper.force) lanes.push({ id: `force:${path}`, label: `${name} force (N)`, kind: "plot", changes: gripper.force, gripper: path,
                                     limits: run.limits[path] || [] });
   }
   for (const key of pinned) {
     const changes = run.outputs[key] || [];
     const numeric = changes.some(([, value]) => typeof value === "number");
-    lanes.push({ id: `pin:${key}`, label: `📌 ${key}`, kind: numeric ? "plot" : "span", changes, pin: key });
+    lanes.push({ id: `pin:${key}`, label: `📌 ${key}`, kind: numeric ? "plot" : "span", changes, pin: key, node: nodeOf(key) });
   }
   return lanes;
 }
 
-export default function Lanes({ run, tick, pinned, onTick, onUnpin }) {
+/** The lane drawn at *y* (px from the top of the plot), given each lane's height, or null between lanes. */
+function laneAt(lanes, heights, y) {
+  let top = 0;
+  for (let index = 0; index < lanes.length; index += 1) {
+    if (y >= top && y < top + heights[index]) return lanes[index];
+    top += heights[index] + 4;
+  }
+  return null;
+}
+
+// onTick(tick): a click jumps there (the report); onPick(lane, tick), when given, is told the lane clicked too
+// (a live run cannot jump back: the studio selects the lane's node and shows the lane's value at that tick)
+export default function Lanes({ run, tick, pinned, onTick, onUnpin, onPick }) {
   const lanes = useMemo(() => laneList(run, pinned), [run, pinned]);
   const ticks = Math.max(1, run.ticks);
   const failures = run.checks.filter((check) => check.passed === false && check.tick !== null);
@@ -114,7 +130,9 @@ export default function Lanes({ run, tick, pinned, onTick, onUnpin }) {
   const total = heights.reduce((a, b) => a + b + 4, 0);
   const jump = (event) => {
     const box = event.currentTarget.getBoundingClientRect();
-    onTick(Math.round(((event.clientX - box.left) / box.width) * ticks));
+    const at = Math.round(((event.clientX - box.left) / box.width) * ticks);
+    if (onPick) onPick(laneAt(lanes, heights, ((event.clientY - box.top) / box.height) * total), at);
+    else onTick(at);
   };
   let top = 0;
   if (lanes.length === 0 && failures.length === 0) {

@@ -52,9 +52,14 @@ function shapeGeometry(shape) {
   }
 }
 
+/** Place an object; whether that moved it (a scene redraws only when something in it changed). */
 function setPose(object, pose) {
-  object.position.set(pose[0], pose[1], pose[2]);
-  object.quaternion.set(pose[3], pose[4], pose[5], pose[6]);
+  const { position: p, quaternion: q } = object;
+  if (p.x === pose[0] && p.y === pose[1] && p.z === pose[2] && q.x === pose[3] && q.y === pose[4] && q.z === pose[5]
+      && q.w === pose[6]) return false;
+  p.set(pose[0], pose[1], pose[2]);
+  q.set(pose[3], pose[4], pose[5], pose[6]);
+  return true;
 }
 
 function buildScene(run) {
@@ -150,13 +155,15 @@ function frameCamera(camera, controls, run) {
   controls.update();
 }
 
-export default function SceneView({ run, tick, held, onReady }) {
+// live: a scene redrawn while a run plays; no multisampling then (Chromium without a GPU draws it in software,
+// where 4x antialiasing is most of a redraw's cost)
+export default function SceneView({ run, tick, held, onReady, live = false }) {
   const mount = useRef(null);
   const state = useRef(null);
 
   useEffect(() => {
     const element = mount.current;
-    const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    const renderer = new THREE.WebGLRenderer({ antialias: !live, preserveDrawingBuffer: true });
     renderer.setPixelRatio(1);
     element.appendChild(renderer.domElement);
     const camera = new THREE.PerspectiveCamera(45, 1, 0.01, 100);
@@ -196,12 +203,17 @@ export default function SceneView({ run, tick, held, onReady }) {
   useEffect(() => {
     const current = state.current;
     if (!current) return;
+    let changed = false;
     for (const [path, track] of Object.entries(run.poses)) {
       const pose = poseAt(track, tick);
-      if (pose && current.bodies[path]) setPose(current.bodies[path].group, pose);
+      if (pose && current.bodies[path] && setPose(current.bodies[path].group, pose)) changed = true;
     }
     for (const [path, body] of Object.entries(current.bodies)) {
-      body.material.color.setHex(held.has(path) ? HELD_COLOUR : body.colour);
+      const colour = held.has(path) ? HELD_COLOUR : body.colour;
+      if (body.material.color.getHex() !== colour) {
+        body.material.color.setHex(colour);
+        changed = true;
+      }
     }
     const closeIndex = indexAt(run.rays, tick, (close) => close.tick);
     const close = closeIndex >= 0 ? run.rays[closeIndex] : null;
@@ -209,8 +221,9 @@ export default function SceneView({ run, tick, held, onReady }) {
       current.rays.clear();
       if (close) current.rays.add(rayObjects(close));
       current.shownClose = close;
+      changed = true;
     }
-    current.render();
+    if (changed) current.render();   // software WebGL: a redraw of an unchanged scene costs as much as any other
   }, [run, tick, held]);
 
   const focusRays = () => {

@@ -125,29 +125,34 @@ class SceneSection:
             statuses[path] = sample.status
             if previous == "Open" and sample.status != "Open":
                 component = manager.component(path)
-                rays[path] = {"limits": force_limits(component),
-                              "rays": [self._ray(component, point) for point in component.points]}
+                rays[path] = {"limits": force_limits(component), "rays": close_rays(self.world, component)}
         return rays
 
-    def _ray(self, component, point) -> dict:
-        """One attachment point's ray as the gripper casts it: origin, direction, reach, nearest surface."""
-        frame = self.world.attachments.frame(point.body0_path, point.local_pose0)
-        if frame is None:
-            return {"point": point.joint_path, "origin": None, "direction": None, "reach": None, "hit": None}
-        direction = quat_rotate(frame[1], AXIS_VECTORS[point.forward_axis])
-        clearance = point.clearance_offset
-        properties = component.properties
-        reach = properties.max_grip_distance - (0.0 if properties.reach_from_ray_origin else clearance)
-        origin = [float(frame[0][i] + direction[i] * clearance) for i in range(3)]
-        hit = None
-        start = origin
-        for step in range(SELF_STEPS):
-            found = self.world.raycast(tuple(start), tuple(direction), RAY_PROBE)
-            if found is None or not found.prim_path:
-                break
-            if not self.world.same_body(found.prim_path, point.body0_path):
-                hit = {"prim": found.prim_path, "distance": float(found.distance) + step * SELF_STEP}
-                break
-            start = [start[i] + direction[i] * SELF_STEP for i in range(3)]
-        return {"point": point.joint_path, "origin": origin, "direction": [float(c) for c in direction],
-                "reach": float(max(reach, 0.001)), "hit": hit}
+
+def close_rays(world, component) -> list[dict]:
+    """A surface gripper's attachment points' rays as it casts them on a close (the trace's and live frames' ``rays``)."""
+    return [_ray(world, component, point) for point in component.points]
+
+
+def _ray(world, component, point) -> dict:
+    """One attachment point's ray as the gripper casts it: origin, direction, reach, nearest surface."""
+    frame = world.attachments.frame(point.body0_path, point.local_pose0)
+    if frame is None:
+        return {"point": point.joint_path, "origin": None, "direction": None, "reach": None, "hit": None}
+    direction = quat_rotate(frame[1], AXIS_VECTORS[point.forward_axis])
+    clearance = point.clearance_offset
+    properties = component.properties
+    reach = properties.max_grip_distance - (0.0 if properties.reach_from_ray_origin else clearance)
+    origin = [float(frame[0][i] + direction[i] * clearance) for i in range(3)]
+    hit = None
+    start = origin
+    for step in range(SELF_STEPS):
+        found = world.raycast(tuple(start), tuple(direction), RAY_PROBE)
+        if found is None or not found.prim_path:
+            break
+        if not world.same_body(found.prim_path, point.body0_path):
+            hit = {"prim": found.prim_path, "distance": float(found.distance) + step * SELF_STEP}
+            break
+        start = [start[i] + direction[i] * SELF_STEP for i in range(3)]
+    return {"point": point.joint_path, "origin": origin, "direction": [float(c) for c in direction],
+            "reach": float(max(reach, 0.001)), "hit": hit}

@@ -6,20 +6,21 @@ made, rounded as the report rounds them, and only those that moved are sent. The
 timelines, and a gripper that closes in one tick or a controller phase shorter than a frame must
 still show, so a listener notes on each tick the changes of the controller phases and of each
 gripper's status, held objects and reason (a few comparisons a tick); the holding force, a plot,
-is read with the frame. Nothing here depends on the trace being recorded.
+is read with the frame. On the tick a gripper starts to close, its rays are cast as the trace's are (the
+scene draws them and their nearest hits). Nothing here depends on the trace being recorded.
 """
 from __future__ import annotations
 
 from typing import Any
 
 from graphflow.observe.trace import (
+    GripperSample,
     phase_outputs,
-    sample_grippers,
     surface_gripper_manager,
     to_json_value,
     used_grippers,
 )
-from graphflow.observe.trace_scene import force_limits
+from graphflow.observe.trace_scene import close_rays, force_limits
 from graphflow.report.build import POSE_DECIMALS
 
 TICK_FIELDS = ("status", "gripped", "reason")   # gripper fields noted on every tick; the others once a frame
@@ -51,6 +52,7 @@ class FrameScene:
         self._gripper_last: dict[str, dict[str, Any]] = {}
         self._frame_fields: dict[str, dict[str, Any]] = {}
         self._limited: set[str] = set()
+        self._closes: list[dict] = []   # the rays of each close since the last frame, as the report's run data lists them
         self._manager = None   # the world's gripper manager, once a node has made it
         simulation.add_listener(self)
 
@@ -73,13 +75,17 @@ class FrameScene:
             now = {"status": manager.get_gripper_status(path).token, "gripped": list(manager.get_gripped_objects(path)),
                    "reason": manager.component(path).reason}
             last = self._gripper_last.setdefault(path, {})
+            if last.get("status", "Open") == "Open" and now["status"] != "Open":
+                self._closes.append({"tick": count, "gripper": path,
+                                     "rays": close_rays(simulation.world, manager.component(path))})
             for name, value in now.items():
                 if name not in last or last[name] != value:
                     last[name] = value
                     self._gripper_changes.setdefault(path, {}).setdefault(name, []).append([count, value])
 
-    def frame(self) -> dict:
-        """``scene`` (poses of bodies that moved, grippers' force limits when first seen) and ``lanes`` since the last."""
+    def frame(self, samples: dict[str, GripperSample]) -> dict:
+        """``scene`` (poses of bodies that moved, grippers' force limits when first seen, closes' rays) and ``lanes``
+        since the last; *samples*: the grippers now (``sample_grippers``, read once a frame for this and the panel)."""
         world, tick = self.simulation.world, self.simulation.instance.tick_count
         poses = {}
         for path, read in zip(self._moving, world.body_poses(self._moving)):
@@ -89,7 +95,7 @@ class FrameScene:
                 self._poses[path] = pose
         grippers, self._gripper_changes = self._gripper_changes, {}
         limits = {}
-        for path, sample in sample_grippers(world).items():
+        for path, sample in samples.items():
             if path in self._unused:
                 continue
             for name, value in sample.fields().items():
@@ -100,10 +106,13 @@ class FrameScene:
                 self._limited.add(path)
                 limits[path] = force_limits(surface_gripper_manager(world).component(path))
         phases, self._changes = self._changes, {}
-        return {"scene": {"poses": poses, "limits": limits}, "lanes": {"phases": phases, "grippers": grippers}}
+        closes = sorted(self._closes, key=lambda close: (close["tick"], close["gripper"]))   # the report's order
+        self._closes = []
+        return {"scene": {"poses": poses, "limits": limits, "rays": closes},
+                "lanes": {"phases": phases, "grippers": grippers}}
 
 def merge_parts(older: dict, newer: dict) -> dict:
-    """The scene and lanes parts of two consecutive frames as one: the newest poses and limits, every lane change.
+    """The scene and lanes parts of two consecutive frames as one: the newest poses and limits, every lane change and close.
 
     For a live loop that merges frames waiting for a slow socket: ``{**older, **newer}`` would drop
     the older frame's lane changes and the poses of bodies that moved only in it.
@@ -117,5 +126,6 @@ def merge_parts(older: dict, newer: dict) -> dict:
         for name, changes in fields.items():
             lanes["grippers"].setdefault(path, {}).setdefault(name, []).extend(changes)
     scene = {"poses": {**older["scene"]["poses"], **newer["scene"]["poses"]},
-             "limits": {**older["scene"]["limits"], **newer["scene"]["limits"]}}
+             "limits": {**older["scene"]["limits"], **newer["scene"]["limits"]},
+             "rays": older["scene"]["rays"] + newer["scene"]["rays"]}
     return {"scene": scene, "lanes": lanes}

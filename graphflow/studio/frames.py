@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from graphflow.observe.trace import sample_grippers, to_json_value, used_grippers
+from graphflow.observe.trace import GripperSample, to_json_value, used_grippers
 from graphflow.studio.frame_scene import merge_parts
 
 MAX_LOG_LINES = 200   # a frame carries at most the newest lines: the page shows a tail, the trace keeps them all
@@ -42,8 +42,9 @@ class FrameSampler:
         self._grippers: dict[str, dict] = {}
         self._logged_tick = instance.tick_count
 
-    def frame(self) -> dict:
-        """The differences since the last call, as the ``frame`` message's fields."""
+    def frame(self, samples: dict[str, GripperSample]) -> dict:
+        """The differences since the last call, as the ``frame`` message's fields; *samples*: the grippers now
+        (``sample_grippers``, read once a frame for this and the lanes)."""
         instance = self.simulation.instance
         outputs = {}
         for values, name, key in self._outputs:
@@ -55,7 +56,7 @@ class FrameSampler:
                           if now != before)
         self._counts = list(counts)
         grippers = {}
-        for path, sample in sample_grippers(self.simulation.world).items():
+        for path, sample in samples.items():
             if path in self._unused:
                 continue
             fields, previous = sample.fields(), self._grippers.get(path, {})

@@ -5,7 +5,8 @@ and gamepad. Its thread owns the simulation (PyBullet is not shared between thre
 arrive through a queue. At most every ``FRAME_SECONDS`` of wall time, never once a tick, a frame is
 sampled from the latest state (``graphflow.studio.frames``): ticking costs what it costs headless
 plus the checks, nothing is recorded per tick. Saving the trace or report replays the run with the
-input it was fed (``graphflow.studio.replay``), which gives the identical trace.
+input it was fed (``graphflow.studio.replay``), which gives the identical trace, in a process of its
+own while the live run goes on.
 """
 from __future__ import annotations
 
@@ -19,10 +20,11 @@ from typing import Callable
 
 from graphflow.document import load_document
 from graphflow.errors import BadInput, GraphflowError
+from graphflow.observe.trace import sample_grippers
 from graphflow.studio.browser_input import BrowserKeys, BrowserPad
 from graphflow.studio.frame_scene import FrameScene
 from graphflow.studio.frames import FrameSampler
-from graphflow.studio.replay import LiveInputs, save_replayed
+from graphflow.studio.replay import LiveInputs, save_in_background
 
 FRAME_SECONDS = 1 / 30
 logger = logging.getLogger(__name__)
@@ -38,6 +40,8 @@ class LiveRun:
         self._thread = threading.Thread(target=self._main, name=f"graphflow-live-{path.name}", daemon=True)
         self.playing = False
         self.speed: float | None = 1.0     # None: as fast as it goes
+        self._saving: set = set()   # replay processes writing a save (stopped if the run closes first)
+        self._closed = False
         self._thread.start()
 
     def command(self, name: str, **fields) -> None:
@@ -47,6 +51,10 @@ class LiveRun:
     def close(self) -> None:
         self.command("close")
         self._thread.join(timeout=10)
+        self._closed = True
+        for process in self._saving:
+            if process.is_alive():
+                process.terminate()
 
     # --- the run's thread -------------------------------------------------------------------------------------
     def _main(self) -> None:
@@ -175,20 +183,28 @@ class LiveRun:
         self._load()
 
     def _save(self, name: str, path: Path) -> None:
-        """The trace or report of the ticks so far, made again from the input delivered; a failure is told, the run goes on."""
+        """The trace or report of the ticks so far, made again from the input delivered in a process of its own:
+        told when written (or why not); the live run does not wait."""
         inputs = LiveInputs(self.checked.document, str(self.path), self.keys.timeline(), self.pad.timeline())
-        try:
-            save_replayed(inputs, name, path, ticks=self.simulation.tick_count, ended=self.ended is not None)
-        except GraphflowError as error:   # the stage went from disk since the run started, the folder is read-only...
-            self.publish({"type": "error", "message": f"{path.name} not saved: {error}"})
-            return
-        self.publish({"type": "saved", "what": name, "path": path.name})
+
+        def done(failure: str | None) -> None:
+            if self._closed:
+                return
+            if failure is None:
+                self.publish({"type": "saved", "what": name, "path": path.name})
+            else:
+                self.publish({"type": "error", "message": f"{path.name} not saved: {failure}"})
+
+        process = save_in_background(inputs, name, path, ticks=self.simulation.tick_count, ended=self.ended is not None,
+                                     done=done)
+        self._saving = {other for other in self._saving if other.is_alive()} | {process}
 
     def _frame(self) -> None:
-        """What changed since the last frame, sampled from the simulation as it is now."""
+        """What changed since the last frame, sampled from the simulation as it is now (the grippers read once)."""
+        grippers = sample_grippers(self.simulation.world)
         self.publish({"type": "frame", "tick": self.simulation.tick_count, "time": self.simulation.world.time,
-                      "playing": self._running(), "speed": self.speed, "ended": self.ended, **self.sampler.frame(),
-                      **self.scene.frame()})
+                      "playing": self._running(), "speed": self.speed, "ended": self.ended,
+                      **self.sampler.frame(grippers), **self.scene.frame(grippers)})
 
 
 class _Unlistened:

@@ -6,12 +6,18 @@ timeline give a bit-identical trace, so the trace of ticks 1..N of a live run is
 checked run, fed the browser's keys and pad as the scripted timelines they were delivered as, stepped N
 ticks with the report's recorder. A live run that ended is replayed as ``graphflow run`` runs it (to
 its own end, its checks judged by the checked run itself), so its report carries the same verdict.
+
+The live run does not wait for its replay (``save_in_background``): the replay runs in a process of its
+own, on the other core, while the live run goes on (in the live run's thread it paused the run ~0.5 s
+for pick-and-place, the replay taking as long as the ticks so far).
 """
 from __future__ import annotations
 
 import contextlib
+import threading
 from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import Callable
 
 from graphflow.document import GraphDocument
 
@@ -69,3 +75,54 @@ def save_replayed(inputs: LiveInputs, what: str, path: Path, *, ticks: int, ende
     else:
         recording.write(path, document, evaluator=checked.evaluator if ended else None,
                         runtime_failure=runtime_failure(checked) if ended else None, seed=checked.seed, force=True)
+
+
+def save_in_background(inputs: LiveInputs, what: str, path: Path, *, ticks: int, ended: bool,
+                       done: Callable[[str | None], None]):
+    """``save_replayed`` in a fresh process; ``done(None)`` once the file is written, ``done(reason)`` when it is not.
+
+    Spawned, not forked: the studio's process has threads (the server's loop, live runs) and PyBullet
+    clients that a fork would copy half-way. The graph goes over as its JSON (a loaded document holds
+    read-only mappings, which do not pickle) and is checked again there. Returns the process, which
+    the live run stops if it closes first.
+    """
+    import multiprocessing
+
+    context = multiprocessing.get_context("spawn")
+    receiving, sending = context.Pipe(duplex=False)
+    document = inputs.document
+    process = context.Process(target=_replay_in_child, daemon=True, name=f"graphflow-save-{path.name}",
+                              args=(sending, document.to_json(), document.source, inputs.source, inputs.keys,
+                                    inputs.pad, what, str(path), ticks, ended))
+    process.start()
+    sending.close()
+
+    def wait() -> None:
+        try:
+            outcome = receiving.recv()
+        except EOFError:   # the process ended without a word: stopped by the live run's close, or killed
+            outcome = "the replay stopped before the file was written"
+        process.join()
+        done(outcome)
+
+    threading.Thread(target=wait, name=f"graphflow-save-wait-{path.name}", daemon=True).start()
+    return process
+
+
+def _replay_in_child(sending, data: dict, document_source: str, source: str, keys, pad, what: str, path: str,
+                     ticks: int, ended: bool) -> None:
+    """The spawned process: rebuild the graph, replay, write; send None, or why not."""
+    import signal
+
+    from graphflow.document import parse_document
+    from graphflow.errors import GraphflowError
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)   # a Ctrl-C is the studio's to handle: it stops this process
+    try:
+        inputs = LiveInputs(parse_document(data, document_source), source, keys, pad)
+        save_replayed(inputs, what, Path(path), ticks=ticks, ended=ended)
+        sending.send(None)
+    except GraphflowError as error:   # the stage went from disk since the run started, the folder is read-only...
+        sending.send(str(error))
+    except Exception as error:   # a bug: said to the page, as the live run's own failures are
+        sending.send(f"internal error: {error!r}")

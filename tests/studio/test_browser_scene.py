@@ -1,4 +1,5 @@
 """The studio's live run in headless Chromium: the report's 3D scene and lanes, fed from the live frames."""
+import json
 import re
 import shutil
 
@@ -13,6 +14,7 @@ from .test_browser import open_studio
 CUBE = "/World/Cube"
 GRIPPER = "/World/ur10/ee_link/SurfaceGripper"
 PINNED = "pick_place.event"
+PHASE = "pick_place.eventName"
 
 
 def value_at(trace, key, tick):
@@ -63,6 +65,18 @@ def test_a_live_run_moves_the_cube_in_the_scene_and_draws_the_gripper_lanes(pick
         pinned = page.evaluate(f"window.graphflowStudio.live.view.outputs[{PINNED!r}]")
         assert PINNED in page.inner_text("[data-testid=lanes]")
         status_titles = page.locator(f"[data-testid='status:{GRIPPER}'] title").all_text_contents()
+        shown_rays = page.evaluate("window.graphflowStudio.shownRays()")
+        assert page.is_visible("[data-testid=focus-rays]")
+        # a lane clicked while live: its node selected, its value at the tick clicked shown
+        page.click(".react-flow__node[data-id='cube_pose']")
+        page.click(f"[data-testid='status:{GRIPPER}']")
+        page.wait_for_selector("[data-testid=inspector][data-node=gripper]")
+        status_pick = page.get_attribute(f"[data-testid=lane-pick][data-lane='status:{GRIPPER}']", "data-tick"), \
+            page.get_attribute("[data-testid=lane-pick]", "data-value")
+        page.click(f"[data-testid='phase:{PHASE}']")
+        page.wait_for_selector("[data-testid=inspector][data-node=pick_place]")
+        phase_pick = page.get_attribute(f"[data-testid=lane-pick][data-lane='phase:{PHASE}']", "data-tick"), \
+            page.get_attribute("[data-testid=lane-pick]", "data-value")
         page.click("[data-action=save-trace]")
         page.wait_for_function("document.querySelector('[data-testid=live-notice]')?.innerText.startsWith('saved')")
         assert not page.errors, page.errors
@@ -76,3 +90,13 @@ def test_a_live_run_moves_the_cube_in_the_scene_and_draws_the_gripper_lanes(pick
     closed_spans = [title for title in status_titles if title.startswith(f"{GRIPPER.split('/')[-1]} status: Closed")]
     assert closed_spans, status_titles
     assert re.search(rf"\(ticks {closed_tick}–", closed_spans[0]), (closed_spans, closed_tick)
+    closes = [(record["tick"], record["rays"][GRIPPER]) for record in trace.ticks if GRIPPER in record.get("rays", {})]
+    close_tick, close = [(at, close) for at, close in closes if at <= tick][-1]
+    assert shown_rays == {"tick": close_tick, "gripper": GRIPPER, "rays": close["rays"]}   # the gripper's rays drawn live
+    assert shown_rays["rays"][0]["hit"]["prim"] == CUBE
+    statuses = [(record["tick"], record["grippers"][GRIPPER]["status"]) for record in trace.ticks
+                if "status" in record.get("grippers", {}).get(GRIPPER, {})]
+    at = int(status_pick[0])
+    assert json.loads(status_pick[1]) == [status for changed, status in statuses if changed <= at][-1]
+    at = int(phase_pick[0])
+    assert json.loads(phase_pick[1]) == value_at(trace, PHASE, at)

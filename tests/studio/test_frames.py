@@ -42,6 +42,7 @@ def test_a_frame_sampled_now_says_what_the_trace_of_the_ticks_since_the_last_one
     """The sampler reads the latest state only; the trace recorded tick by tick of the same run is the reference."""
     from graphflow.document import load_document
     from graphflow.observe.recorder import TraceRecorder
+    from graphflow.observe.trace import sample_grippers
     from graphflow.runtime import Simulation
     from graphflow.studio.frames import FrameSampler
 
@@ -60,7 +61,7 @@ def test_a_frame_sampled_now_says_what_the_trace_of_the_ticks_since_the_last_one
             since = records[start:]
             for record in since:
                 state.update(record.get("outputs", {}))
-            sampled = sampler.frame()
+            sampled = sampler.frame(sample_grippers(simulation.world))
             assert sampled["outputs"] == {key: value for key, value in state.items() if before[key] != value}
             assert sampled["outputs"]   # the counter counts
             assert sampled["computed"] == sorted({name for record in since for name in record.get("computed", ())})

@@ -142,3 +142,24 @@ def test_a_live_run_saves_the_trace_and_verdict_graphflow_run_gives(pick_place):
     assert ended["checks"] == verdict.checks == 6
     lines = headless.splitlines(keepends=True)
     assert (pick_place.folder / "first7.jsonl").read_text() == "".join(lines[:8])   # the header and ticks 1-7
+
+
+def test_the_live_run_goes_on_while_a_save_replays_it(pick_place):
+    """The replay runs in a process of its own: steps sent after a save are answered before the file is written."""
+    from graphflow.verdicts.checked_run import run_checked
+
+    with websockets_sync.connect(f"ws://127.0.0.1:{pick_place.port}/api/live?path=pick.json&token={pick_place.token}",
+                                 open_timeout=30) as socket:
+        until(socket, "start")
+        step(socket, 5)
+        socket.send(json.dumps({"command": "saveTrace", "path": "five.jsonl"}))
+        for _ in range(3):
+            socket.send(json.dumps({"command": "step"}))
+        answered = []
+        while (message := json.loads(socket.recv(timeout=120)))["type"] != "saved":
+            assert message["type"] == "frame", message
+            answered.append(message["tick"])
+    assert answered and answered[-1] == 8   # every step answered (frames waiting merge) while the replay went on elsewhere
+    run_checked(pick_place.folder / "pick.json", trace=pick_place.folder / "run.jsonl")
+    lines = (pick_place.folder / "run.jsonl").read_text().splitlines(keepends=True)
+    assert (pick_place.folder / "five.jsonl").read_text() == "".join(lines[:6])   # the header and ticks 1-5

@@ -76,6 +76,10 @@ def test_the_frames_carry_every_phase_and_gripper_change_and_the_bodies_last_pos
             assert sent[1] == pytest.approx(samples[max(tick for tick in samples if tick <= sent[0])], abs=1e-5)
             compared += 1
     assert compared >= STEPS // 4, compared
+    closes = [close for frame in frames for close in frame["scene"]["rays"]]   # each close's rays, cast on its tick
+    assert closes == [{"tick": r["tick"], "gripper": path, "rays": close["rays"]}
+                      for r in records for path, close in sorted(r.get("rays", {}).items())]
+    assert closes and closes[-1]["rays"][0]["hit"]["prim"] == CUBE   # the close that picked the cube saw it
     limits = [frame["scene"]["limits"][GRIPPER] for frame in frames if GRIPPER in frame["scene"]["limits"]]
     assert limits == [next(close["limits"] for r in records for close in r.get("rays", {}).values())]   # sent once
 
@@ -83,12 +87,14 @@ def test_the_frames_carry_every_phase_and_gripper_change_and_the_bodies_last_pos
 def test_two_frames_merged_keep_every_lane_change_and_the_newest_poses():
     from graphflow.studio.frame_scene import merge_parts
 
-    older = {"scene": {"poses": {"/a": [4, [1.0] * 7], "/b": [4, [2.0] * 7]}, "limits": {"/g": {"shear": 500.0}}},
+    older = {"scene": {"poses": {"/a": [4, [1.0] * 7], "/b": [4, [2.0] * 7]}, "limits": {"/g": {"shear": 500.0}},
+                       "rays": [{"tick": 4, "gripper": "/g", "rays": []}]},
              "lanes": {"phases": {"c.eventName": [[3, "descend"]]}, "grippers": {"/g": {"status": [[4, "Closing"]]}}}}
-    newer = {"scene": {"poses": {"/a": [8, [3.0] * 7]}, "limits": {}},
+    newer = {"scene": {"poses": {"/a": [8, [3.0] * 7]}, "limits": {}, "rays": [{"tick": 9, "gripper": "/g", "rays": []}]},
              "lanes": {"phases": {"c.eventName": [[7, "lift"]]}, "grippers": {"/g": {"status": [[5, "Closed"]]}}}}
     merged = merge_parts(older, newer)
-    assert merged["scene"] == {"poses": {"/a": [8, [3.0] * 7], "/b": [4, [2.0] * 7]}, "limits": {"/g": {"shear": 500.0}}}
+    assert merged["scene"] == {"poses": {"/a": [8, [3.0] * 7], "/b": [4, [2.0] * 7]}, "limits": {"/g": {"shear": 500.0}},
+                               "rays": [{"tick": 4, "gripper": "/g", "rays": []}, {"tick": 9, "gripper": "/g", "rays": []}]}
     assert merged["lanes"] == {"phases": {"c.eventName": [[3, "descend"], [7, "lift"]]},
                                "grippers": {"/g": {"status": [[4, "Closing"], [5, "Closed"]]}}}
     assert older["lanes"]["phases"]["c.eventName"] == [[3, "descend"]]   # the frames themselves left as they were

@@ -3,6 +3,7 @@
 import React, { useState } from "react";
 import { shortValue } from "../data.js";
 import PrimPicker from "./PrimPicker.jsx";
+import { useLive } from "./liveStore.js";
 
 /** Inputs that take a value here: not execution or bundle ports, which only connections set. */
 const valued = (port) => !port.execution && port.type !== "bundle";
@@ -52,7 +53,12 @@ function InputWidget({ port, value, onChange }) {
   );
 }
 
-function LiveOutputs({ node, type, live, pinned, onPin }) {
+function LiveValue({ wire }) {   // one output's value, redrawn only when that value changes
+  const value = useLive((live) => live?.outputs[wire]);
+  return <td data-output={wire}>{shortValue(value)}</td>;
+}
+
+function LiveOutputs({ node, type, pinned, onPin }) {
   const ports = type ? type.outputs.filter((port) => !port.execution) : [];
   return (
     <table className="gf-live-outputs" data-testid="live-outputs">
@@ -62,7 +68,7 @@ function LiveOutputs({ node, type, live, pinned, onPin }) {
           return (
             <tr key={key}>
               <th>{port.name}</th>
-              <td data-output={key}>{shortValue(live.outputs[key])}</td>
+              <LiveValue wire={key} />
               <td><button type="button" data-pin={key} disabled={pinned.includes(key)} title="plot it in the lanes"
                           onClick={() => onPin(key)}>pin</button></td>
             </tr>
@@ -103,7 +109,7 @@ export default function Inspector({ node, type, problems, onRename, onDelete, on
           ))}
         </tbody>
       </table>
-      {live && <><h3>Outputs, live</h3><LiveOutputs node={node} type={type} live={live} pinned={pinned} onPin={onPin} /></>}
+      {live && <><h3>Outputs, live</h3><LiveOutputs node={node} type={type} pinned={pinned} onPin={onPin} /></>}
     </section>
   );
 }

@@ -1,11 +1,16 @@
 // The live run's controls (play, pause, step, reset, speed, save as report), its gripper fields and verdict,
 // and the on-screen gamepad: pad 0's D-pad, face buttons and left stick, for the gamepad nodes.
-import React from "react";
+import React, { memo } from "react";
+import { useLive } from "./liveStore.js";
 
 const SPEEDS = [["1×", 1], ["4×", 4], ["max", null]];
+const NONE = {};
+const NO_LINES = [];
 const BUTTONS = ["D-Pad Up", "D-Pad Down", "D-Pad Left", "D-Pad Right", "Face Button Bottom", "Face Button Right"];
 
-export function LiveBar({ live, send }) {
+export function LiveBar({ send }) {
+  const live = useLive((state) => state);   // the bar shows the tick: it is the one part redrawn on every frame
+  if (!live) return null;
   return (
     <div className="gf-live-bar" data-testid="live-bar" data-tick={live.tick} data-playing={String(live.playing)}>
       <button type="button" data-action="play" onClick={() => send({ command: "play" })}>play</button>
@@ -26,23 +31,40 @@ export function LiveBar({ live, send }) {
   );
 }
 
-export function LivePanel({ live, send }) {
+function Grippers() {
+  const grippers = useLive((live) => live?.grippers ?? NONE);
+  return Object.entries(grippers).map(([path, fields]) => (
+    <dl key={path} data-gripper={path}>
+      <dt>{path}</dt>
+      {Object.entries(fields).filter(([, value]) => typeof value !== "object").map(([field, value]) => (
+        <dd key={field} data-gripper-field={field}>{field}: {String(value)}</dd>))}
+    </dl>
+  ));
+}
+
+function Verdict() {
+  const ended = useLive((live) => live?.ended);
+  if (!ended) return null;
+  return (
+    <p data-testid="live-verdict" data-passed={String(ended.passed)}>
+      {ended.passed ? `run ended: all ${ended.checks} checks hold` : `run ended: ${ended.failures.join("; ")}`}
+    </p>
+  );
+}
+
+function Log() {
+  const log = useLive((live) => live?.log ?? NO_LINES);
+  return <pre className="gf-live-log" data-testid="live-log">{log.map((line) => line.join(" ")).join("\n")}</pre>;
+}
+
+// memo: the panel itself never changes while a run plays; its grippers, verdict and log redraw on their own
+export const LivePanel = memo(function LivePanel({ send }) {
   const pad = (element, value) => send({ pad: element, value });
   return (
     <section className="gf-live-panel" data-testid="live-panel">
       <h2>Grippers</h2>
-      {Object.entries(live.grippers).map(([path, fields]) => (
-        <dl key={path} data-gripper={path}>
-          <dt>{path}</dt>
-          {Object.entries(fields).filter(([, value]) => typeof value !== "object").map(([field, value]) => (
-            <dd key={field} data-gripper-field={field}>{field}: {String(value)}</dd>))}
-        </dl>
-      ))}
-      {live.ended && (
-        <p data-testid="live-verdict" data-passed={String(live.ended.passed)}>
-          {live.ended.passed ? `run ended: all ${live.ended.checks} checks hold` : `run ended: ${live.ended.failures.join("; ")}`}
-        </p>
-      )}
+      <Grippers />
+      <Verdict />
       <h2>Gamepad (pad 0)</h2>
       <div className="gf-pad">
         {BUTTONS.map((element) => (
@@ -58,7 +80,7 @@ export function LivePanel({ live, send }) {
         ))}
       </div>
       <h2>Log</h2>
-      <pre className="gf-live-log" data-testid="live-log">{live.log.map((line) => line.join(" ")).join("\n")}</pre>
+      <Log />
     </section>
   );
-}
+});

@@ -7,16 +7,21 @@ import Inspector from "./Inspector.jsx";
 import StudioGraph from "./StudioGraph.jsx";
 import { LiveBar, LivePanel } from "./Live.jsx";
 import LiveScene from "./LiveScene.jsx";
-import { startView, withFrame, worthShowing } from "./liveView.js";
+import { startView, withFrame } from "./liveView.js";
+import { LiveContext, liveStore, withMessage } from "./liveStore.js";
 import { ChecksEditor, SettingsEditor, VariablesEditor, problemsAt } from "./DocumentEditors.jsx";
 
 const TABS = ["node", "variables", "checks", "settings"];
 const SECTIONS = { variables: ["variables"], checks: ["checks"], settings: ["settings", "scenario"] };
 import "./studio.css";
 
-const NO_LIVE = { outputs: {}, computed: new Set(), grippers: {}, log: [], tick: 0, time: 0, playing: false, speed: 1 };
-const MAX_LOG = 300;
-const SCENE_MS = 100;   // while a run plays, the 3D scene and lanes redraw at most 10 times a second (software WebGL is costly)
+// While a run plays, the page draws its frames at most 10 times a second (the server sends up to 30): without a
+// GPU, Chromium composites every drawn frame in software, ~15 ms of a core each on this 2-core machine, whatever
+// changed (measured: 0.78 cores drawing 30 a second, 0.42 drawing 10). Frames within INPUT_MS of a key or pad
+// change, the frame answering a command, and any frame of a run not playing (paused, stepped, ended) are drawn
+// at once.
+const SHOW_MS = 100;
+const INPUT_MS = 300;
 
 function portType(typesById, graph, nodeName, group, port) {
   const node = graph.nodes.find((entry) => entry.name === nodeName);
@@ -47,7 +52,8 @@ export default function Studio({ config }) {
   const [selected, setSelected] = useState(null);
   const [notice, setNotice] = useState(null);
   const [conflict, setConflict] = useState(null);
-  const [live, setLive] = useState(null);
+  const [live, setLive] = useState(false);       // a live run was started (its state is in liveNow, not here)
+  const liveNow = useMemo(() => liveStore(SHOW_MS), []);
   const [dirty, setDirty] = useState(false);   // edits not saved: a change on disk is then a conflict, not a reload
   const watched = useRef(null);
   const socket = useRef(null);
@@ -57,9 +63,18 @@ export default function Studio({ config }) {
   pinnedNow.current = pinned;
   const view = useRef(null);                  // the live run as the scene and lanes read it (liveView.js)
   const scene = useRef(null);
-  const sceneShownAt = useRef(0);
+  const inputAt = useRef(-Infinity);   // when the page last sent a key or pad change: the frames after it are drawn at once
+  const commanded = useRef(false);     // a command was sent: the next frame (its answer) is drawn at once
   const sceneReady = useCallback((built) => { scene.current = built; }, []);
   const unpin = useCallback((key) => setPinned((list) => list.filter((item) => item !== key)), []);
+  const nodes = file && file.data.nodes;
+  const selectLane = useCallback((lane) => {   // a lane's node: its own (phase, pin) or the gripper node naming its gripper
+    const naming = nodes.filter((node) => JSON.stringify(node.inputs || {}).includes(JSON.stringify(lane.gripper)));
+    const name = lane.node ?? (naming.find((node) => /gripper/i.test(node.type)) ?? naming[0])?.name;
+    if (!name) return;
+    setSelected(name);
+    setTab("node");
+  }, [nodes]);
 
   const load = useCallback(() => call(config, "GET", `/api/graph?path=${encodeURIComponent(config.file)}`).then((opened) => {
     if (opened.http !== 200) return setNotice(opened.error);
@@ -168,6 +183,8 @@ export default function Studio({ config }) {
   }, [config, file]);
 
   const send = useCallback((message) => {
+    if (message.command) commanded.current = true;
+    else inputAt.current = performance.now();
     if (socket.current && socket.current.readyState === WebSocket.OPEN) socket.current.send(JSON.stringify(message));
   }, []);
 
@@ -182,27 +199,14 @@ export default function Studio({ config }) {
       const message = JSON.parse(event.data);
       if (message.type === "start") view.current = startView(message.run);
       if (message.type === "frame" && view.current) view.current = withFrame(view.current, message, pinnedNow.current);
-      const now = performance.now();
-      const redraw = message.type !== "frame" || !message.playing || now - sceneShownAt.current >= SCENE_MS;
-      if (redraw) sceneShownAt.current = now;
-      setLive((current) => {
-        const base = current || { ...NO_LIVE, reportPath, tracePath };
-        if (message.type === "start") {
-          const outputs = Object.fromEntries(Object.entries(message.run.outputs).map(([key, changes]) => [key, changes.at(-1)[1]]));
-          return { ...NO_LIVE, reportPath, tracePath, speed: base.speed, outputs, limit: message.limit, view: view.current };
-        }
-        if (message.type === "error") return { ...base, notice: message.message };
-        if (message.type === "saved") return { ...base, notice: `saved ${message.path}` };
-        const grippers = { ...base.grippers };
-        Object.entries(message.grippers).forEach(([path, fields]) => { grippers[path] = { ...grippers[path], ...fields }; });
-        return { ...base, outputs: { ...base.outputs, ...message.outputs }, computed: new Set(message.computed), grippers,
-                 tick: message.tick, time: message.time, playing: message.playing, speed: message.speed,
-                 ended: message.ended, log: [...base.log, ...message.log].slice(-MAX_LOG),
-                 view: redraw ? view.current : base.view };
-      });
+      const urgent = message.type !== "frame" || !message.playing || commanded.current
+        || performance.now() - inputAt.current < INPUT_MS;
+      if (message.type === "frame") commanded.current = false;
+      liveNow.set(withMessage(liveNow.get(), message, { reportPath, tracePath, view: view.current }), urgent);
     };
-    ws.onclose = () => setLive((current) => current && { ...current, notice: "live run closed" });
-  }, [config, file]);
+    ws.onclose = () => liveNow.get() && liveNow.set({ ...liveNow.get(), notice: "live run closed" });
+    setLive(true);
+  }, [config, file, liveNow]);
 
   useEffect(() => {   // keys go to the live run (OnKeyboardInput), except while typing in a field
     if (!live) return undefined;
@@ -216,15 +220,16 @@ export default function Studio({ config }) {
     window.addEventListener("keydown", press);
     window.addEventListener("keyup", release);
     return () => { window.removeEventListener("keydown", press); window.removeEventListener("keyup", release); };
-  }, [live !== null, send]);
+  }, [live, send]);
 
   useEffect(() => () => socket.current && socket.current.close(), []);
 
   useEffect(() => {   // what a browser test drives and reads
-    window.graphflowStudio = { file, problems, live, connect, save, startLive, send,
-      bodyPosition: (path) => scene.current?.bodies[path]?.group.position.toArray() ?? null };
+    window.graphflowStudio = { file, problems, connect, save, startLive, send, get live() { return liveNow.get(); },
+      bodyPosition: (path) => scene.current?.bodies[path]?.group.position.toArray() ?? null,
+      shownRays: () => scene.current?.shownClose ?? null };
     document.body.dataset.studio = file ? "ready" : "loading";
-  }, [file, problems, live, connect, save, startLive, send]);
+  }, [file, problems, liveNow, connect, save, startLive, send]);
 
   if (!palette || !forms || !file) return <div className="gf-studio" data-testid="studio">{notice || "loading…"}</div>;
   const node = file.data.nodes.find((entry) => entry.name === selected);
@@ -232,6 +237,7 @@ export default function Studio({ config }) {
   const graphProblems = problems.filter((problem) => !problem.node && !placed(problem));
   const tabProblems = (name) => (SECTIONS[name] || []).reduce((count, section) => count + problemsAt(problems, section).length, 0);
   return (
+    <LiveContext.Provider value={liveNow}>
     <div className="gf-studio" data-testid="studio">
       <header className="gf-studio-bar">
         <b>{file.path}</b>
@@ -251,11 +257,11 @@ export default function Studio({ config }) {
                   save as a draft beside it</button></>}
         </section>
       )}
-      {live && <LiveBar live={live} send={send} />}
+      {live && <LiveBar send={send} />}
       <div className="gf-studio-main">
         <Palette types={palette.types} onAdd={addNode} />
         <StudioGraph graph={file.data} typesById={typesById} problems={problems} positions={positions}
-                     live={live || NO_LIVE} selected={selected} onSelect={(name) => { setSelected(name); if (name) setTab("node"); }}
+                     selected={selected} onSelect={(name) => { setSelected(name); if (name) setTab("node"); }}
                      onNodesChange={(changes) => setPositions((now) => {
                        const next = { ...now };
                        changes.forEach((change) => { if (change.type === "position" && change.position) next[change.id] = change.position; });
@@ -291,11 +297,12 @@ export default function Studio({ config }) {
                                 entry.inputs = { ...(entry.inputs || {}), [port]: value };
                                 return data;
                               })} />}
-          {live && <LivePanel live={live} send={send} />}
+          {live && <LivePanel send={send} />}
         </aside>
       </div>
-      {live && live.view && worthShowing(live.view, pinned) && <LiveScene view={live.view} pinned={pinned} onReady={sceneReady} onUnpin={unpin} />}
+      {live && <LiveScene pinned={pinned} onReady={sceneReady} onUnpin={unpin} onSelectLane={selectLane} />}
     </div>
+    </LiveContext.Provider>
   );
 }
 

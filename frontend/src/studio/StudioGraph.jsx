@@ -1,15 +1,19 @@
 // The graph being edited, in React Flow: one handle per port of the node's spec, connections only
 // between ports whose types the runtime lets connect (palette.connects is graphflow.types.can_connect),
-// problems marked on the node and port they name, live values on the wires and computed nodes lit.
+// problems marked on the node and port they name, live values on the wires and computed nodes lit. The
+// nodes and edges handed to React Flow change only with the graph: a live frame redraws the labels and
+// highlights that read a changed value (liveStore.js), and React Flow lays nothing out again.
 import React, { memo, useEffect, useMemo, useRef, useState } from "react";
 import { BaseEdge, Background, Controls, EdgeLabelRenderer, Handle, Position, ReactFlow, applyNodeChanges, getBezierPath } from "@xyflow/react";
 import { formatValue, shortValue } from "../data.js";
+import { useLive } from "./liveStore.js";
 
 const ROW = 18;
 const TOP = 40;
 
 const EditNode = memo(function EditNode({ data }) {
-  const { node, type, problems, computed, selected } = data;
+  const { node, type, problems, selected } = data;
+  const computed = useLive((live) => Boolean(live?.computed.has(node.name)));
   const inputs = type ? type.inputs : [];
   const outputs = type ? type.outputs : [];
   const flagged = new Set(problems.map((problem) => problem.attribute));
@@ -44,20 +48,26 @@ const EditNode = memo(function EditNode({ data }) {
   );
 });
 
+function WireValue({ wire, x, y }) {   // redrawn only when this wire's value changes
+  const value = useLive((live) => live?.outputs[wire]);
+  if (value === undefined) return null;
+  return (
+    <EdgeLabelRenderer>
+      <div className="gf-wire-value nodrag nopan" data-wire={wire} data-value={JSON.stringify(value)}
+           title={`${wire} = ${formatValue(value)}`}
+           style={{ transform: `translate(-50%, -50%) translate(${x}px, ${y}px)` }}>
+        {shortValue(value, 30)}
+      </div>
+    </EdgeLabelRenderer>
+  );
+}
+
 function LiveEdge({ id, sourceX, sourceY, targetX, targetY, sourcePosition, targetPosition, data, style }) {
   const [path, labelX, labelY] = getBezierPath({ sourceX, sourceY, sourcePosition, targetX, targetY, targetPosition });
   return (
     <>
       <BaseEdge id={id} path={path} style={style} />
-      {data.value !== undefined && (
-        <EdgeLabelRenderer>
-          <div className="gf-wire-value nodrag nopan" data-wire={data.wire} data-value={JSON.stringify(data.value)}
-               title={`${data.wire} = ${formatValue(data.value)}`}
-               style={{ transform: `translate(-50%, -50%) translate(${labelX}px, ${labelY}px)` }}>
-            {shortValue(data.value, 30)}
-          </div>
-        </EdgeLabelRenderer>
-      )}
+      <WireValue wire={data.wire} x={labelX} y={labelY} />
     </>
   );
 }
@@ -65,20 +75,20 @@ function LiveEdge({ id, sourceX, sourceY, targetX, targetY, sourcePosition, targ
 const nodeTypes = { edit: EditNode };
 const edgeTypes = { live: LiveEdge };
 
-export default function StudioGraph({ graph, typesById, problems, positions, live, selected, onSelect, onMove,
+export default function StudioGraph({ graph, typesById, problems, positions, selected, onSelect, onMove,
                                       onNodesChange, onConnect, onDisconnect }) {
-  // while a run streams, a node is rebuilt (and redrawn) only when something it shows changed
+  // after an edit, a node is rebuilt (and redrawn) only when something it shows changed
   const previous = useRef({});
   const derived = useMemo(() => graph.nodes.map((node) => {
     const data = { node, type: typesById[node.type], problems: problems.filter((problem) => problem.node === node.name),
-                   computed: live.computed.has(node.name), selected: selected === node.name };
+                   selected: selected === node.name };
     const position = positions[node.name] || { x: 0, y: 0 };
     const last = previous.current[node.name];
     if (last && last.position === position && Object.keys(data).every((key) => key === "problems"
         ? last.data.problems.length === data.problems.length && last.data.problems.every((p, i) => p === data.problems[i])
         : last.data[key] === data[key])) return last;
     return (previous.current[node.name] = { id: node.name, type: "edit", position, data });
-  }), [graph, typesById, problems, positions, live, selected]);
+  }), [graph, typesById, problems, positions, selected]);
   // React Flow measures nodes through change events: keep its measurements, take everything else from the graph
   const [nodes, setNodes] = useState([]);
   useEffect(() => setNodes((current) => {
@@ -91,19 +101,12 @@ export default function StudioGraph({ graph, typesById, problems, positions, liv
     setNodes((current) => applyNodeChanges(changes, current));
     onNodesChange(changes);
   };
-  const previousEdges = useRef({});
   const edges = useMemo(() => (graph.connections || []).map((connection) => {
-    const id = `${connection.src}->${connection.dst}`;
     const [source, sourcePort] = connection.src.split(".outputs:");
     const [target, targetPort] = connection.dst.split(".inputs:");
-    const value = live.outputs[`${source}.${sourcePort}`];
-    const last = previousEdges.current[id];
-    if (last && last.data.value === value) return last;   // same value object: the wire's label is unchanged
-    return (previousEdges.current[id] = {
-      id, source, target, sourceHandle: sourcePort, targetHandle: targetPort,
-      type: "live", data: { wire: `${source}.${sourcePort}`, value },
-    });
-  }), [graph, live]);
+    return { id: `${connection.src}->${connection.dst}`, source, target, sourceHandle: sourcePort, targetHandle: targetPort,
+             type: "live", data: { wire: `${source}.${sourcePort}` } };
+  }), [graph]);
   return (
     <div className="gf-graph gf-studio-graph" data-testid="graph">
       <ReactFlow nodes={nodes} edges={edges} nodeTypes={nodeTypes} edgeTypes={edgeTypes} fitView minZoom={0.1} proOptions={{ hideAttribution: true }}

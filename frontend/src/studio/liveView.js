@@ -1,5 +1,5 @@
 // The live run as the report's scene and lanes read it: the start message's run data, grown frame by frame.
-// Frames carry the poses of the bodies that moved, every phase and gripper status change with its tick
+// Frames carry the poses of the bodies that moved, each close's rays, every phase and gripper status change with its tick
 // (graphflow/studio/frame_scene.py); pinned outputs are sampled once a frame. The lists grow in place (the
 // scene keeps its three.js objects); each frame gives a new top-level object so the panels redraw.
 
@@ -14,6 +14,7 @@ function appendAfter(list, entries) {
 export function withFrame(view, frame, pinned) {
   const { scene, lanes } = frame;   // frame_scene.py's parts: poses that moved, every lane change with its tick
   for (const [path, sample] of Object.entries(scene.poses)) appendAfter(view.poses[path] ||= [], [sample]);
+  view.rays.push(...scene.rays);   // each close's rays: the scene draws the last one's, as the report does
   for (const [gripper, limits] of Object.entries(scene.limits)) {
     view.limits[gripper] = Object.entries(limits).map(([name, value]) => ({ name, value }));
   }
