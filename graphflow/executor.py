@@ -20,6 +20,7 @@ from __future__ import annotations
 import logging
 from collections import Counter, deque
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any, Callable, Iterable, NoReturn
 
 from graphflow.compiled import CompiledGraph, CompiledNode
@@ -131,6 +132,11 @@ class NodeDatabase:
     @property
     def is_latent(self) -> bool:
         return self._index in self._instance._latent
+
+    @property
+    def base_dir(self) -> Path:
+        """The graph file's folder: files a node names relative to the graph are found from here."""
+        return self._instance.compiled.document.base_dir
 
     @property
     def connected_exec_outputs(self) -> frozenset[str]:

@@ -7,6 +7,7 @@ registry accepts for one node type: ``SPEC`` and ``compute``, optionally ``initi
 """
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any, NoReturn, Protocol, runtime_checkable
 
 from graphflow.spec import NodeSpec
@@ -45,6 +46,9 @@ class NodeDb(Protocol):
 
     @property
     def is_latent(self) -> bool: ...
+
+    @property
+    def base_dir(self) -> Path: ...
 
     def log(self, message: str, level: str = "info") -> None: ...
 

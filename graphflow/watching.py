@@ -17,7 +17,7 @@ from typing import Callable, Iterable
 
 POLL_SECONDS = 0.5
 WATCHED_IN_FOLDERS = (".json", ".usda", ".usd", ".usdc", ".usdz")   # what a folder given to `test` is watched for
-_INPUT_FILES = ("keys", "gamepad", "topics")   # scenario (and table case) entries that may name a file
+_INPUT_FILES = ("keys", "gamepad", "mouse", "topics")   # scenario (and table case) entries that may name a file
 
 
 def graph_files(path: str | os.PathLike) -> list[Path]:

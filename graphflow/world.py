@@ -254,6 +254,12 @@ class World(Protocol):
     def gravity(self) -> Vec3:
         """The stage's gravity vector, m/s^2."""
 
+    # prims switched off while running (SetPrimActive)
+    def prim_active(self, prim_path: str) -> bool:
+        """Whether the prim is active: on the stage as authored and not switched off since."""
+    def set_prim_active(self, prim_path: str, active: bool) -> None:
+        """Take the prim's rigid bodies out of the simulation (False) or back in (True), at rest."""
+
 
 def on_nearest_ancestor(path: str, query: Callable[[str], ServiceT]) -> tuple[str, ServiceT]:
     """``(prim, query(prim))`` for *path* or, where the world refuses it, its nearest ancestor that it accepts.
@@ -311,3 +317,4 @@ class ClockWorld:
     set_joint_targets = get_attribute = set_attribute = read_prim = gravity = _no_physics
     raycast = raycast_batch = contacts = body_of = same_body = _no_physics
     apply_force = gravity_enabled = set_gravity_enabled = set_collision_between = _no_physics
+    prim_active = set_prim_active = _no_physics

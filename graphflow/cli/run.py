@@ -35,6 +35,12 @@ def register(commands) -> None:
     run.add_argument("--pad", action="append", default=[], metavar="ELEMENT=VALUE@TIME",
                      help='scripted gamepad element (repeatable), held until changed: "Left Stick X Axis=0.5@1.0", '
                           '"Face Button Bottom=1@3"; "1:..." for pad 1')
+    run.add_argument("--mouse", metavar="FILE",
+                     help='scripted mouse for OnMouseInput / ReadMouseState nodes: JSON '
+                          '{"mouse": [{"element": "Left Button", "time": 1.0, "value": 1}, ...]}')
+    run.add_argument("--click", action="append", default=[], metavar="ELEMENT=VALUE@TIME",
+                     help='scripted mouse event (repeatable): "Left Button=1@0.5" (down; =0 up), '
+                          '"Position=0.25,0.5@1.0" (normalized), "Scroll=0,-1@2"')
     run.add_argument("--topics", metavar="FILE",
                      help='scripted ROS 2 topics for subscriber nodes: JSON {"topics": [{"topic": "/joint_command", '
                           '"time": 0.5, "type": "sensor_msgs/msg/JointState", "message": {...}}, ...]}')
@@ -79,21 +85,24 @@ def _scripted_inputs(args, document):
     """The run's scripted devices: the options', else (headless) the graph's own scenario section."""
     from graphflow.inputs.gamepad import scripted_pad
     from graphflow.inputs.keyboard import scripted_keys
+    from graphflow.inputs.mouse import scripted_mouse
     from graphflow.ros2 import run as ros2_run
     from graphflow.verdicts.checked_run import ScriptedInputs
 
     keys = scripted_keys(args.keys, args.key)
     pad = scripted_pad(args.gamepad, args.pad)
+    mouse = scripted_mouse(args.mouse, args.click)
     topics = ros2_run.check_options(args.topics, args.topic, args.record_topics)
-    if not args.gui and keys is None and pad is None and topics is None:
+    if not args.gui and keys is None and pad is None and mouse is None and topics is None:
         return ScriptedInputs.of_document(document)   # the scenario's inputs are used whole or not at all
-    return ScriptedInputs(keys=keys, pad=pad, topics=topics)
+    return ScriptedInputs(keys=keys, pad=pad, topics=topics, mouse=mouse)
 
 
 def _changed_by_options(args) -> list[str]:
     """The options that make this run differ from the graph's scenario, so its checks do not apply."""
     options = {"--ticks": args.ticks is not None, "--seconds": args.seconds is not None, "--keys": args.keys is not None,
                "--key": bool(args.key), "--gamepad": args.gamepad is not None, "--pad": bool(args.pad),
+               "--mouse": args.mouse is not None, "--click": bool(args.click),
                "--topics": args.topics is not None, "--topic": bool(args.topic), "--gui": args.gui}
     return [name for name, given in options.items() if given]
 
@@ -105,7 +114,7 @@ def command_run(args) -> int:
     from graphflow.watching import Watcher, graph_files
 
     def files() -> list:
-        named = [args.keys, args.gamepad, args.topics, args.randomize]
+        named = [args.keys, args.gamepad, args.mouse, args.topics, args.randomize]
         return list(dict.fromkeys([*graph_files(args.graph), *(Path(name) for name in named if name)]))
 
     def after_run(code: int) -> None:

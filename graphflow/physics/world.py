@@ -18,6 +18,7 @@ import pybullet
 from pybullet_utils.bullet_client import BulletClient
 
 from graphflow.physics import attributes
+from graphflow.physics.activity import PrimActivity
 from graphflow.physics.attachment import WorldAttachments
 from graphflow.physics.builder import SceneBuilder
 from graphflow.physics.contacts import (
@@ -132,6 +133,7 @@ class PyBulletWorld(SceneLookups):
         self._offsets: dict = {}
         self._pose_plans: dict = {}             # body_poses: paths -> which PyBullet calls answer them, last poses
         self._joint_torques: dict[str, list[float]] = {}    # the last step's TORQUE_CONTROL forces, by articulation
+        self.activity = PrimActivity(self)                # prims SetPrimActive switched off (all on after a build)
 
     @property
     def attachment_joints(self):
@@ -384,6 +386,13 @@ class PyBulletWorld(SceneLookups):
     def set_gravity_enabled(self, prim_path: str, enabled: bool) -> None:
         """Switch gravity for one dynamic body (a counter-force -m g at its centre of mass each step)."""
         self.gravity_switches.switch(self._body(prim_path), enabled)
+
+    def prim_active(self, prim_path: str) -> bool:
+        return self.activity.is_active(prim_path)
+
+    def set_prim_active(self, prim_path: str, active: bool) -> None:
+        """Take the prim's free bodies out of the simulation, or back in (``graphflow.physics.activity``)."""
+        self.activity.set_active(prim_path, active)
 
 
 __all__ = ["PyBulletWorld", "RayHit", "Contact", "ATTRIBUTES"]

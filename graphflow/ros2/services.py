@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from graphflow.ros2.messages import MessageError, primitive
 
-# service type -> (request fields, response fields); each field: (name, ROS 2 primitive type)
+# service type -> (request fields, response fields); each field: (name, ROS 2 primitive type, or T[] a sequence)
 SERVICE_TYPES: dict[str, tuple[tuple[tuple[str, str], ...], tuple[tuple[str, str], ...]]] = {
     "std_srvs/srv/Empty": ((), ()),
     "std_srvs/srv/SetBool": ((("data", "bool"),), (("success", "bool"), ("message", "string"))),
@@ -23,6 +23,20 @@ SERVICE_TYPES: dict[str, tuple[tuple[tuple[str, str], ...], tuple[tuple[str, str
     "example_interfaces/srv/AddTwoInts": ((("a", "int64"), ("b", "int64")), (("sum", "int64"),)),
     "example_interfaces/srv/SetBool": ((("data", "bool"),), (("success", "bool"), ("message", "string"))),
     "example_interfaces/srv/Trigger": ((), (("success", "bool"), ("message", "string"))),
+    # Isaac's own prim services (ROS2ServicePrim), from isaac_ros2_messages' published .srv sources
+    "isaac_ros2_messages/srv/GetPrims": (
+        (("path", "string"),),
+        (("paths", "string[]"), ("types", "string[]"), ("success", "bool"), ("message", "string"))),
+    "isaac_ros2_messages/srv/GetPrimAttributes": (
+        (("path", "string"),),
+        (("names", "string[]"), ("displays", "string[]"), ("types", "string[]"), ("success", "bool"),
+         ("message", "string"))),
+    "isaac_ros2_messages/srv/GetPrimAttribute": (
+        (("path", "string"), ("attribute", "string")),
+        (("value", "string"), ("type", "string"), ("success", "bool"), ("message", "string"))),
+    "isaac_ros2_messages/srv/SetPrimAttribute": (
+        (("path", "string"), ("attribute", "string"), ("value", "string")),
+        (("success", "bool"), ("message", "string"))),
 }
 REQUEST, RESPONSE = "request", "response"
 
@@ -50,7 +64,18 @@ def complete(full_type: str, part: str, fields: dict, where: str) -> dict:
     if unknown:
         raise MessageError(f"{where}: the {full_type} {part} has no field {', '.join(unknown)} "
                            f"(fields: {', '.join(names) or 'none'})")
-    return {name: primitive(kind, fields.get(name), f"{where}.{name}") for name, kind in declared}
+    return {name: _field(kind, fields.get(name), f"{where}.{name}") for name, kind in declared}
+
+
+def _field(kind: str, value, where: str):
+    """A primitive, or for ``T[]`` a list of them (an unset sequence is empty)."""
+    if not kind.endswith("[]"):
+        return primitive(kind, value, where)
+    if value is None:
+        return []
+    if not isinstance(value, (list, tuple)):
+        raise MessageError(f"{where}: expected a list, got {value!r}")
+    return [primitive(kind[:-2], item, f"{where}[{index}]") for index, item in enumerate(value)]
 
 
 class ServiceServers:

@@ -90,13 +90,15 @@ LIVE_COMMANDS = {"play", "pause", "step", "reset", "speed"}
 
 
 def _live_message(run, message, folder, report_path) -> None:
-    """One message of the page: a run command, a key, a gamepad control, or a save-as."""
+    """One message of the page: a run command, a key, a gamepad control, a mouse event, or a save-as."""
     if not isinstance(message, dict):
         raise BadInput("a live message is a JSON object")
     if "key" in message:
         run.keys.press(message["key"], bool(message.get("down")))
     elif "pad" in message:
         run.pad.move(message["pad"], message.get("value"))
+    elif "mouse" in message:
+        run.mouse.event(message["mouse"], message.get("value"))
     elif message.get("command") in LIVE_COMMANDS:
         run.command(message["command"], value=message.get("value"))
     elif message.get("command") in ("saveReport", "saveTrace"):

@@ -1,4 +1,4 @@
-"""Key presses and gamepad controls from the studio's page, as sources of graphflow.inputs' services.
+"""Key presses, gamepad controls and mouse events from the studio's page, as sources of graphflow.inputs' services.
 
 The page sends what the browser reports (``KeyboardEvent.code``: ``KeyA``, ``ArrowUp``, ``ShiftLeft``);
 here it becomes Kit's key names (``A``, ``Up``, ``LeftShift``), the tokens ``OnKeyboardInput`` reads,
@@ -14,6 +14,7 @@ import threading
 from graphflow.errors import BadInput
 from graphflow.inputs.gamepad import ELEMENTS, PadChange, ScriptedPad, value_range
 from graphflow.inputs.keyboard import KEY_TOKENS, KeyAction, ScriptedKeys
+from graphflow.inputs.mouse import MouseSpecError, ScriptedMouse, make_change
 
 _NAMED_CODES = {
     "ArrowUp": "Up", "ArrowDown": "Down", "ArrowLeft": "Left", "ArrowRight": "Right", "Delete": "Del",
@@ -98,3 +99,20 @@ class BrowserPad(_Pending):
         """The pad changes delivered so far as a scripted timeline, each at the time of the poll that got it."""
         return ScriptedPad([PadChange(element, value, time, pad)
                             for time, changes in self.delivered for pad, element, value in changes])
+
+
+class BrowserMouse(_Pending):
+    """A ``MouseSource`` fed by the page: ``event(element, value)`` as a mouse timeline entry (Kit's buttons 1/0,
+    ``Position`` [x, y] normalized to the page's view, ``Scroll`` [dx, dy]). The page does not send these yet."""
+
+    def event(self, element: str, value) -> None:
+        try:
+            change = make_change(element, value, 0.0, where="mouse")
+        except MouseSpecError as error:
+            raise BadInput(str(error)) from None
+        self.push((change.element, change.value))
+
+    def timeline(self) -> ScriptedMouse:
+        """The mouse events delivered so far as a scripted timeline, each at the time of the poll that got it."""
+        return ScriptedMouse([make_change(element, value, time, where="mouse")
+                              for time, changes in self.delivered for element, value in changes])

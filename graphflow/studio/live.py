@@ -21,7 +21,7 @@ from typing import Callable
 from graphflow.document import load_document
 from graphflow.errors import BadInput, GraphflowError
 from graphflow.observe.trace import sample_grippers
-from graphflow.studio.browser_input import BrowserKeys, BrowserPad
+from graphflow.studio.browser_input import BrowserKeys, BrowserMouse, BrowserPad
 from graphflow.studio.frame_scene import FrameScene
 from graphflow.studio.frames import FrameSampler
 from graphflow.studio.replay import LiveInputs, save_in_background
@@ -35,7 +35,7 @@ class LiveRun:
 
     def __init__(self, path: Path, publish: Callable[[dict], object]):
         self.path, self.publish = path, publish
-        self.keys, self.pad = BrowserKeys(), BrowserPad()
+        self.keys, self.pad, self.mouse = BrowserKeys(), BrowserPad(), BrowserMouse()
         self._commands: queue.Queue = queue.Queue()
         self._thread = threading.Thread(target=self._main, name=f"graphflow-live-{path.name}", daemon=True)
         self.playing = False
@@ -78,7 +78,7 @@ class LiveRun:
         document = load_document(self.path)
         scripted = ScriptedInputs.of_document(document)
         self.checked = CheckedRun(document, source=str(self.path),
-                                  inputs=replace(scripted, keys=self.keys, pad=self.pad))
+                                  inputs=replace(scripted, keys=self.keys, pad=self.pad, mouse=self.mouse))
         self.checked.preflight()
         self.simulation = self.checked.start()
         self.sampler = FrameSampler(self.simulation)
@@ -180,12 +180,14 @@ class LiveRun:
         self.checked.close()
         self.keys.rewind()
         self.pad.rewind()
+        self.mouse.rewind()
         self._load()
 
     def _save(self, name: str, path: Path) -> None:
         """The trace or report of the ticks so far, made again from the input delivered in a process of its own:
         told when written (or why not); the live run does not wait."""
-        inputs = LiveInputs(self.checked.document, str(self.path), self.keys.timeline(), self.pad.timeline())
+        inputs = LiveInputs(self.checked.document, str(self.path), self.keys.timeline(), self.pad.timeline(),
+                            self.mouse.timeline())
 
         def done(failure: str | None) -> None:
             if self._closed:

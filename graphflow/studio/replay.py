@@ -3,7 +3,7 @@
 The live run records nothing per tick (recording cost it a fifth of its rate, and the records of an
 hour-long keyboard session grow without end). A run is deterministic: the same graph, seed and input
 timeline give a bit-identical trace, so the trace of ticks 1..N of a live run is the trace of a fresh
-checked run, fed the browser's keys and pad as the scripted timelines they were delivered as, stepped N
+checked run, fed the browser's keys, pad and mouse as the scripted timelines they were delivered as, stepped N
 ticks with the report's recorder. A live run that ended is replayed as ``graphflow run`` runs it (to
 its own end, its checks judged by the checked run itself), so its report carries the same verdict.
 
@@ -41,12 +41,13 @@ def generators_kept():
 
 @dataclass(frozen=True)
 class LiveInputs:
-    """What a live run was fed: the graph as loaded, and the browser's key and pad timelines so far."""
+    """What a live run was fed: the graph as loaded, and the browser's key, pad and mouse timelines so far."""
 
     document: GraphDocument
     source: str
     keys: object   # graphflow.inputs.keyboard.ScriptedKeys
     pad: object    # graphflow.inputs.gamepad.ScriptedPad
+    mouse: object = None   # graphflow.inputs.mouse.ScriptedMouse
 
 
 def save_replayed(inputs: LiveInputs, what: str, path: Path, *, ticks: int, ended: bool) -> None:
@@ -57,7 +58,7 @@ def save_replayed(inputs: LiveInputs, what: str, path: Path, *, ticks: int, ende
     from graphflow.verdicts.checked_run import CheckedRun, ScriptedInputs
 
     document = inputs.document
-    scripted = replace(ScriptedInputs.of_document(document), keys=inputs.keys, pad=inputs.pad)
+    scripted = replace(ScriptedInputs.of_document(document), keys=inputs.keys, pad=inputs.pad, mouse=inputs.mouse)
     checked = CheckedRun(document, source=inputs.source, inputs=scripted)
     with contextlib.ExitStack() as closing:
         closing.enter_context(generators_kept())
@@ -93,7 +94,7 @@ def save_in_background(inputs: LiveInputs, what: str, path: Path, *, ticks: int,
     document = inputs.document
     process = context.Process(target=_replay_in_child, daemon=True, name=f"graphflow-save-{path.name}",
                               args=(sending, document.to_json(), document.source, inputs.source, inputs.keys,
-                                    inputs.pad, what, str(path), ticks, ended))
+                                    inputs.pad, inputs.mouse, what, str(path), ticks, ended))
     process.start()
     sending.close()
 
@@ -109,8 +110,8 @@ def save_in_background(inputs: LiveInputs, what: str, path: Path, *, ticks: int,
     return process
 
 
-def _replay_in_child(sending, data: dict, document_source: str, source: str, keys, pad, what: str, path: str,
-                     ticks: int, ended: bool) -> None:
+def _replay_in_child(sending, data: dict, document_source: str, source: str, keys, pad, mouse, what: str,
+                     path: str, ticks: int, ended: bool) -> None:
     """The spawned process: rebuild the graph, replay, write; send None, or why not."""
     import signal
 
@@ -119,7 +120,7 @@ def _replay_in_child(sending, data: dict, document_source: str, source: str, key
 
     signal.signal(signal.SIGINT, signal.SIG_IGN)   # a Ctrl-C is the studio's to handle: it stops this process
     try:
-        inputs = LiveInputs(parse_document(data, document_source), source, keys, pad)
+        inputs = LiveInputs(parse_document(data, document_source), source, keys, pad, mouse)
         save_replayed(inputs, what, Path(path), ticks=ticks, ended=ended)
         sending.send(None)
     except GraphflowError as error:   # the stage went from disk since the run started, the folder is read-only...

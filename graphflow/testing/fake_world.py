@@ -133,6 +133,7 @@ class FakeWorld:
         self.rays: list[tuple[Vec3, Vec3, float]] = []
         self.applied_forces: list[tuple[str, Vec3, Vec3 | None]] = []
         self.no_collision: set[frozenset[str]] = set()
+        self.inactive: set[str] = set()                     # prims SetPrimActive switched off (the boxes stay)
         self._pending_forces: list[tuple[str, Vec3, Vec3 | None]] = []
 
     # -- building the scene --
@@ -173,6 +174,7 @@ class FakeWorld:
         self.step_index = 0
         self._pending_forces = []
         self.applied_forces = []
+        self.inactive.clear()
         self.attachments.reset()
         self.services.reset()
 
@@ -357,6 +359,17 @@ class FakeWorld:
     def set_collision_between(self, prim_a: str, prim_b: str, enabled: bool) -> None:
         pair = frozenset((self.body_of(prim_a) or prim_a, self.body_of(prim_b) or prim_b))
         (self.no_collision.discard if enabled else self.no_collision.add)(pair)
+
+    def prim_active(self, prim_path: str) -> bool:
+        prim = self.stage.GetPrimAtPath(prim_path) if self.stage is not None else None
+        if prim_path not in self.boxes and not prim:
+            raise WorldError(f"no prim {prim_path} in this fake world")
+        switched_off = any(prim_path == off or prim_path.startswith(off + "/") for off in self.inactive)
+        return (not prim or prim.IsActive()) and not switched_off
+
+    def set_prim_active(self, prim_path: str, active: bool) -> None:
+        self.prim_active(prim_path)
+        (self.inactive.discard if active else self.inactive.add)(prim_path)
 
 
 def _ray_box(origin: Vec3, unit: Vec3, length: float, box: Box) -> RayHit | None:

@@ -14,15 +14,10 @@ from dataclasses import dataclass
 
 from graphflow.usd.node_mapping import RENDERING_NODES
 
-MOUSE = ("graphflow scripts the keyboard and gamepad (--keys, --pad) but has no mouse service yet; headless "
-         "it would never fire")
-HOST = "reads the host machine (environment, files, wall clock): not reproducible, so not carried over"
-PRIM_SERVICES = ("serves Isaac's own isaac_ros2_messages service types (prim list, attribute read/write), "
-                 "defined in Isaac's ROS workspace, not among graphflow's service types yet")
+REAL_TIME_FACTOR = ("its one output is simulated time over wall-clock time, which differs from run to run and "
+                    "machine to machine; graphflow traces are bit-identical for the same inputs and seed, so a "
+                    "wall-clock reading is not carried into a graph")
 TEST_ONLY = "Isaac's internal test node"
-EDITOR = "sets up a robot in the editor, not at run time"
-TF_DRIVEN = ("places prims at the poses /tf carries by switching off their articulations, joints and rigid "
-             "bodies, which graphflow's world cannot do while running")
 PRIM_EDIT = "changes the stage's prims while running, which graphflow's world does not do"
 GRAPH_TARGETS = "a numeric id of the graph target (Kit's internal prim handle); GraphTarget gives its path"
 VARIANTS = ("reads or switches USD variant selections; graphflow composes the stage once, at load, with the "
@@ -36,11 +31,6 @@ MATERIALS = "reads or binds render materials, which only Kit's renderer uses"
 MANEUVER = ("animates a prim's xform ops over several ticks as an editor animation; graphflow's bodies move by "
             "physics (WritePrimLocalTransform places a free body)")
 GRAPH_VALUES = "reads any node's attribute by path through Kit's runtime store; graphflow graphs read outputs through connections"
-APPEND_ARRAY = "its input ports are not on Kit's reference pages this project could read; not carried over yet"
-LOOK_AT = ("Kit's reference does not say whether its matrix is the eye's world transform or the view "
-           "(world-to-eye) matrix, its inverse")
-GAUSSIAN = "its standard-deviation port is not on Kit's reference pages this project could read"
-NTH_ROOT = "its output port is not on Kit's reference pages this project could read"
 NOISE = "Kit's reference pages do not state its noise function, so values would not match Kit's"
 
 _ISAAC_CORE = "isaacsim.core.nodes"
@@ -59,13 +49,13 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ExitApplication": None, "FlipFlop": None, "ForEach": None, "ForEachTarget": None, "ForLoop": None,
         "Gate": None, "Multigate": None, "Multisequence": None, "OnClosing": None, "OnCustomEvent": None,
         "OnGamepadInput": None, "OnImpulseEvent": None, "OnKeyboardInput": None, "OnLoaded": None,
-        "OnMessageBusEvent": None, "OnMouseInput": MOUSE,
+        "OnMessageBusEvent": None, "OnMouseInput": None,
         "OnObjectChange": None, "OnPlaybackTick": None, "OnStageEvent": None, "OnTick": None,
         "OnVariableChange": None, "Once": None, "RationalTimeSyncGate": None, "SendCustomEvent": None,
-        "SendMessageBusEvent": None, "Sequence": None, "SetPrimActive": PRIM_EDIT, "SwitchToken": None,
+        "SendMessageBusEvent": None, "Sequence": None, "SetPrimActive": None, "SwitchToken": None,
         "SyncGate": None}),
     "omni.graph.nodes": _ids("omni.graph.nodes", {
-        "Absolute": None, "Acos": None, "Add": None, "AnyZero": None, "AppendArray": APPEND_ARRAY, "AppendPath": None,
+        "Absolute": None, "Acos": None, "Add": None, "AnyZero": None, "AppendArray": None, "AppendPath": None,
         "AppendString": None, "AppendTargetPaths": None, "AppendTargets": None, "ArrayAppendValue": None,
         "ArrayFill": None, "ArrayFindValue": None, "ArrayGetSize": None, "ArrayIndex": None, "ArrayInsertValue": None,
         "ArrayLength": None, "ArrayRemoveIndex": None, "ArrayRemoveValue": None, "ArrayReplaceValue": None,
@@ -109,11 +99,11 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "LengthAlongCurve": GEOMETRY, "LoopTimeline": TIMELINE, "Magnitude": None,
         "MakeArray": "Kit's older Python array maker, replaced by ConstructArray; not carried over",
         "MakeMatrix2": None, "MakeMatrix3": None, "MakeMatrix4": None, "MakeTransform": None,
-        "MakeTransformLookAt": LOOK_AT, "MakeVector2": None, "MakeVector3": None, "MakeVector4": None,
+        "MakeTransformLookAt": None, "MakeVector2": None, "MakeVector3": None, "MakeVector4": None,
         "MatrixMultiply": None, "Maximum": None, "Minimum": None, "Modulo": None, "MoveToTarget": MANEUVER,
         "MoveToTransform": MANEUVER, "Multiply": None, "Negate": None, "Noise": NOISE, "Normalize": None,
-        "NthRoot": NTH_ROOT, "RandomBoolean": None, "RandomGaussian": GAUSSIAN, "RandomUnitQuaternion": None,
-        "RandomUnitVector": None, "ReadGamepadState": None, "ReadKeyboardState": None,
+        "NthRoot": None, "RandomBoolean": None, "RandomGaussian": None, "RandomUnitQuaternion": None,
+        "RandomUnitVector": None, "ReadGamepadState": None, "ReadKeyboardState": None, "ReadMouseState": None,
         "ReadOmniGraphValue": GRAPH_VALUES, "ReadPrim": None, "ReadPrimAttribute": None,
         "ReadPrimAttributes": None, "ReadPrimBundle": None, "ReadPrimLocalTransform": None,
         "ReadPrimMaterial": MATERIALS, "ReadPrimRelationship": None, "ReadPrims": None, "ReadPrimsBundle": None,
@@ -137,10 +127,10 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "IsaacConvertDepthToPointCloud": None, "IsaacConvertRGBAToRGB": None, "IsaacCreateRenderProduct": None,
         "IsaacCreateViewport": None, "IsaacGenerate32FC1": None, "IsaacGenerateRGBA": None,
         "IsaacGetViewportRenderProduct": None, "IsaacJointNameResolver": None,
-        "IsaacPassthroughImagePtr": None, "IsaacReadCameraInfo": None, "IsaacReadEnvVar": HOST,
-        "IsaacReadFilePath": HOST, "IsaacReadSimulationTime": None, "IsaacReadSimulationTimeAnnotator": None,
+        "IsaacPassthroughImagePtr": None, "IsaacReadCameraInfo": None, "IsaacReadEnvVar": None,
+        "IsaacReadFilePath": None, "IsaacReadSimulationTime": None, "IsaacReadSimulationTimeAnnotator": None,
         "IsaacReadSystemTime": None, "IsaacReadSystemTimeAnnotator": None, "IsaacReadTimes": None, "IsaacReadWorldPose": None,
-        "IsaacRealTimeFactor": HOST, "IsaacSetCameraOnRenderProduct": None, "IsaacSetViewportResolution": None,
+        "IsaacRealTimeFactor": REAL_TIME_FACTOR, "IsaacSetCameraOnRenderProduct": None, "IsaacSetViewportResolution": None,
         "IsaacSimulationGate": None, "IsaacTestNode": TEST_ONLY, "IsaacTimeSplitter": None,
         "OgnIsaacRunOneSimulationFrame": None, "OgnIsaacScaleToFromStageUnit": None, "OnPhysicsStep": None}),
     "isaacsim.ros2.bridge / isaacsim.ros2.nodes": _ids(_ROS2, {
@@ -153,13 +143,13 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ROS2PublishObjectIdMap": None, "ROS2PublishOdometry": None, "ROS2PublishPointCloud": None,
         "ROS2PublishRawTransformTree": None, "ROS2PublishSemanticLabels": None, "ROS2PublishTransformTree": None,
         "ROS2Publisher": None, "ROS2QoSProfile": None, "ROS2RtxLidarHelper": None,
-        "ROS2RtxLidarPointCloudConfig": None, "ROS2RtxRadarHelper": None, "ROS2ServicePrim": PRIM_SERVICES,
+        "ROS2RtxLidarPointCloudConfig": None, "ROS2RtxRadarHelper": None, "ROS2ServicePrim": None,
         "ROS2SubscribeAckermannDrive": None,
-        "ROS2SubscribeClock": None, "ROS2SubscribeJointState": None, "ROS2SubscribeTransformTree": TF_DRIVEN,
+        "ROS2SubscribeClock": None, "ROS2SubscribeJointState": None, "ROS2SubscribeTransformTree": None,
         "ROS2SubscribeTwist": None, "ROS2Subscriber": None}),
     "isaacsim.robot.wheeled_robots": _ids(_WHEELED, {
         "AckermannController": None, "CheckGoal2D": None, "DifferentialController": None, "HolonomicController": None,
-        "HolonomicRobotUsdSetup": EDITOR, "QuinticPathPlanner": None,
+        "HolonomicRobotUsdSetup": None, "QuinticPathPlanner": None,
         "StanleyControlPID": None}),
     "isaacsim.sensors.physics": _ids(_SENSORS, {
         "IsaacReadContactSensor": None, "IsaacReadEffortSensor": None, "IsaacReadIMU": None,

@@ -13,7 +13,7 @@ from __future__ import annotations
 import json
 import re
 import shlex
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import lru_cache
 from importlib import resources
 from pathlib import Path
@@ -47,6 +47,7 @@ class Case:
     seed: int | None = None
     fail_pattern: str | None = None   # None: the case must pass
     checks: tuple = ()                # the table's checks, added to the graph's
+    mouse: Any = None
 
     @property
     def item_name(self) -> str:
@@ -73,6 +74,10 @@ class Case:
             command += ["--pad", pad]
         if isinstance(self.gamepad, str):
             command += ["--gamepad", str(Path(self.table).parent / self.gamepad)]
+        for event in self.mouse if isinstance(self.mouse, list) else ():
+            command += ["--click", event]
+        if isinstance(self.mouse, str):
+            command += ["--mouse", str(Path(self.table).parent / self.mouse)]
         return shlex.join(command)
 
 
@@ -115,7 +120,7 @@ def load_table(path: str | Path) -> list[Case]:
             except re.error as error:
                 raise TableError(f"{source}: case {row['name']!r}: expect.fail is not a regular expression: {error}") from None
         case = Case(source, graph, row["name"], dict(row.get("set", {})), row.get("keys"), row.get("gamepad"),
-                    row.get("seed"), pattern, checks)
+                    row.get("seed"), pattern, checks, row.get("mouse"))
         try:
             apply_node_overrides(document, [e for e in case.edits() if not e.on_stage])
         except OverrideError as error:
@@ -141,18 +146,18 @@ def run_case(case: Case, *, trace: str | Path | None = None):
 
     from graphflow.inputs.gamepad import scripted_pad
     from graphflow.inputs.keyboard import scripted_keys
+    from graphflow.inputs.mouse import scripted_mouse
     from graphflow.variants.overrides import make_variant
     from graphflow.verdicts.checked_run import CheckedRun, CollectedLog, ScriptedInputs
 
     document = graph_with_checks(case.graph, case.checks)
     inputs = ScriptedInputs.of_document(document)
     base = Path(case.table).parent
-    if case.keys is not None:
-        inputs = ScriptedInputs(keys=scripted_keys(str(base / case.keys)) if isinstance(case.keys, str)
-                                else scripted_keys(None, list(case.keys)), pad=inputs.pad)
-    if case.gamepad is not None:
-        inputs = ScriptedInputs(keys=inputs.keys, pad=scripted_pad(str(base / case.gamepad))
-                                if isinstance(case.gamepad, str) else scripted_pad(None, list(case.gamepad)))
+    for name, value, make in (("keys", case.keys, scripted_keys), ("pad", case.gamepad, scripted_pad),
+                              ("mouse", case.mouse, scripted_mouse)):
+        if value is not None:       # a case's input replaces the scenario's for that device; the rest stay
+            inputs = replace(inputs, **{name: make(str(base / value)) if isinstance(value, str)
+                                        else make(None, list(value))})
     checked = CheckedRun(document, source=case.item_name, variant=make_variant(document, case.edits()),
                          inputs=inputs, seed=case.seed)
     checked.verdict.expect_failure = ()

@@ -92,20 +92,22 @@ class Verdict:
 
 @dataclass(frozen=True)
 class ScriptedInputs:
-    """The keyboard, gamepad and ROS 2 topic sources of a run (None: that device is not scripted)."""
+    """The keyboard, gamepad, ROS 2 topic and mouse sources of a run (None: that device is not scripted)."""
 
     keys: Any = None
     pad: Any = None
     topics: Any = None
+    mouse: Any = None
 
     @classmethod
     def of_document(cls, document: GraphDocument) -> "ScriptedInputs":
         """What the document's ``scenario`` section scripts; ``BadInput`` for a timeline that cannot be read."""
         from graphflow.inputs.gamepad import scripted_pad
         from graphflow.inputs.keyboard import scripted_keys
+        from graphflow.inputs.mouse import scripted_mouse
 
         sources: list[Any] = []
-        for name, make in (("keys", scripted_keys), ("gamepad", scripted_pad)):
+        for name, make in (("keys", scripted_keys), ("gamepad", scripted_pad), ("mouse", scripted_mouse)):
             value = document.scenario.get(name)
             if value is None:
                 sources.append(None)
@@ -113,7 +115,7 @@ class ScriptedInputs:
                 sources.append(make(str(document.base_dir / value)))
             else:
                 sources.append(make(None, list(value)))
-        return cls(keys=sources[0], pad=sources[1], topics=_scenario_topics(document))
+        return cls(keys=sources[0], pad=sources[1], topics=_scenario_topics(document), mouse=sources[2])
 
     def attach(self, world) -> None:
         """Make the scripted devices services of *world* (they replace a window's or a browser's input)."""
@@ -125,6 +127,10 @@ class ScriptedInputs:
             from graphflow.inputs.gamepad import attach_gamepad
 
             attach_gamepad(world, self.pad)
+        if self.mouse is not None:
+            from graphflow.inputs.mouse import attach_mouse
+
+            attach_mouse(world, self.mouse)
         if self.topics is not None:
             from graphflow.ros2.bus import attach_transport
 

@@ -54,6 +54,7 @@ STAGE_INPUTS = {
     "omni.graph.nodes.ReadPrimLocalTransform": {"prim": CUBE},
     "omni.graph.nodes.WritePrimLocalTransform": {"prim": CUBE},
     "omni.graph.nodes.IsPrimActive": {"primTarget": CUBE},
+    "omni.graph.action.SetPrimActive": {"primTarget": CUBE},
     "omni.graph.action.OnObjectChange": {"prim": CUBE, "name": "physics:mass"},
     "isaacsim.core.nodes.IsaacJointNameResolver": {"robotPath": UR10, "jointNames": ["elbow_joint"]},
     "omni.graph.nodes.GetPrimDirectionVector": {"prim": CUBE, "usePath": False},
@@ -67,7 +68,8 @@ STAGE_INPUTS = {
 }
 
 # types whose prim the packaged stage lacks: on it they must refuse clearly, naming the prim
-OWN_PRIM = {"isaacsim.sensors.physics.IsaacReadRaycastSensor": ({"raycastSensorPrim": CUBE}, "rayOrigins")}
+OWN_PRIM = {"isaacsim.sensors.physics.IsaacReadRaycastSensor": ({"raycastSensorPrim": CUBE}, "rayOrigins"),
+            "isaacsim.robot.wheeled_robots.HolonomicRobotUsdSetup": ({"robotPrim": UR10}, "isaacmecanumwheel:angle")}
 
 TYPES = default_registry().types()
 # constants holding paths and path conversions pass them on without reading the scene

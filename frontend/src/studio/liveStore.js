@@ -4,7 +4,7 @@
 // max speed showed each frame re-rendering the whole studio and React Flow's every node and edge.
 import { createContext, useContext, useSyncExternalStore } from "react";
 
-export function liveStore(showEveryMs) {
+export function liveStore(showEveryMs) {   // showEveryMs(state): the least time between drawings
   let state = null;
   let shownAt = -Infinity;
   let timer = null;
@@ -19,7 +19,7 @@ export function liveStore(showEveryMs) {
     /** The new state; drawn now when *urgent* or when the last drawing is showEveryMs old, else when it is. */
     set(next, urgent = true) {
       state = next;
-      const wait = urgent ? 0 : shownAt + showEveryMs - performance.now();
+      const wait = urgent ? 0 : shownAt + showEveryMs(next) - performance.now();
       if (wait <= 0) {
         clearTimeout(timer);
         show();
