@@ -36,7 +36,7 @@ SPEC = NodeSpec(
     ),
     outputs=(
         Attribute("execOut", "execution", description="Fires after the commands were computed"),
-        Attribute("velocityCommand", "double[]", description="[left, right] wheel velocities, rad/s"),
+        Attribute("velocityCommand", "double[]", default=(0.0, 0.0), description="[left, right] wheel velocities, rad/s"),
         Attribute("positionCommand", "double[]", description="Empty: this controller commands velocities"),
         Attribute("effortCommand", "double[]", description="Empty: this controller commands velocities"),
     ),

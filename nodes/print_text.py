@@ -10,7 +10,8 @@ SPEC = NodeSpec(
     description=(
         "On an execIn pulse, writes 'text' to the run's log at logLevel "
         "(Info, Warning or Error) and fires execOut. An Error-level line is only "
-        "logged; it does not stop the graph."),
+        "logged; it does not stop the graph. toScreen and viewport are Kit's on-screen "
+        "copy of the line: a graphflow run has no viewport, so the log is where it goes."),
     categories=("debug",),
     ui_name="Print Text",
     inputs=(
@@ -18,6 +19,9 @@ SPEC = NodeSpec(
         Attribute("text", "string", default="", description="The text to print"),
         Attribute("logLevel", "token", default="Info", allowed_tokens=tuple(LEVELS),
                   description="Info, Warning or Error"),
+        Attribute("toScreen", "bool", default=False,
+                  description="Kit also shows the text on a viewport (none here: logged either way)"),
+        Attribute("viewport", "token", default="", description="Kit's viewport for toScreen (none here)"),
     ),
     outputs=(
         Attribute("execOut", "execution", description="Fires after printing"),

@@ -10,6 +10,9 @@ SPEC = NodeSpec(
     ui_name="Read Variable",
     inputs=(
         Attribute("variableName", "token", default="", description="Name of the graph variable"),
+        Attribute("graph", "target", optional=True,
+                  description="Ignored, as in Kit since version 2: the variable is this graph's"),
+        Attribute("targetPath", "token", default="", description="Ignored, as in Kit since version 2"),
     ),
     outputs=(
         Attribute("value", "any", description="The variable's value"),

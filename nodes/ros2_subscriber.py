@@ -2,7 +2,8 @@
 
 Isaac makes one dynamic output per message field; graphflow's node declares
 its ports in one place, so the whole message comes out as one JSON object in
-``message`` (every field present, defaults filled).
+``message`` (every field present, defaults filled). Until the first message
+arrives it holds the type's defaults, as Kit's field outputs hold theirs.
 """
 import json
 
@@ -36,7 +37,7 @@ SPEC = NodeSpec(
 def compute(db):
     if db.inputs.execIn != ExecState.ENABLED:
         return
-    from graphflow.ros2.messages import MessageError, type_name
+    from graphflow.ros2.messages import MessageError, complete, type_name
 
     try:
         full_type = type_name(message_type(db))
@@ -44,6 +45,8 @@ def compute(db):
         db.error(str(error))
     message = take(db, full_type)
     if message is None:
+        if not db.outputs.message:   # nothing received yet: the type's defaults, as Kit's field outputs
+            db.outputs.message = json.dumps(complete(full_type, {}), sort_keys=True)
         return
     db.outputs.message = json.dumps(message, sort_keys=True)
     db.outputs.execOut = ExecState.ENABLED

@@ -17,6 +17,9 @@ SPEC = NodeSpec(
         Attribute("execIn", "execution", description="Input execution"),
         Attribute("variableName", "token", default="", description="Name of the graph variable"),
         Attribute("value", "any", description="The new value"),
+        Attribute("graph", "target", optional=True,
+                  description="Ignored, as in Kit since version 2: the variable is this graph's"),
+        Attribute("targetPath", "token", default="", description="Ignored, as in Kit since version 2"),
     ),
     outputs=(
         Attribute("execOut", "execution", description="Fires after the variable is written"),

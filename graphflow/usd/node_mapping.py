@@ -88,6 +88,22 @@ GENERIC_PUBLISHERS = ("isaacsim.ros2.bridge.ROS2Publisher", "omni.isaac.ros2_bri
                       "omni.graph.action.SendMessageBusEvent")
 GENERIC_SUBSCRIBERS = ("isaacsim.ros2.bridge.ROS2Subscriber", "omni.isaac.ros2_bridge.ROS2Subscriber")
 MESSAGE_FIELDS = "messageFields"
+MESSAGE_FIELD = "graphflow.ROS2MessageField"   # reads one field of a generic subscriber's message
+
+
+def message_field(subscriber: str, port: str, kept: dict, registry, nodes: list[dict], connections: list[dict],
+                  where: str, notes: list[str]) -> str:
+    """Kit's per-field output *port* of a generic subscriber, read from its JSON message by a ROS2MessageField node
+    (added to *nodes* and *kept* once); the source to connect from."""
+    field = port.split(":", 1)[1]
+    name = f"{subscriber}_{field.replace(':', '_')}"
+    if name not in kept:
+        kept[name] = registry.get(MESSAGE_FIELD)
+        nodes.append({"name": name, "type": MESSAGE_FIELD, "inputs": {"field": field}})
+        connections.append({"src": f"{subscriber}.outputs:message", "dst": f"{name}.inputs:message"})
+        notes.append(f"{where} output '{port}': Kit's per-field output read from outputs:message by node '{name}' "
+                     f"({MESSAGE_FIELD})")
+    return f"{name}.outputs:value"
 
 
 def is_legacy_surface_gripper(type_id: str, version) -> bool:
@@ -111,9 +127,10 @@ def map_legacy_surface_gripper(name: str, authored: dict, where: str, notes: lis
 
 
 def legacy_gripper_renames(name: str) -> dict:
-    """Where connections into a v1 SurfaceGripper's exec pins go: onStep to the legacy node, Close/Open to its command node."""
+    """Where connections of a v1 SurfaceGripper's pins go: onStep and Closed to the legacy node, Close/Open to its
+    command node."""
     command = f"{name}{COMMAND_NODE_SUFFIX}"
-    return {(name, "inputs:onStep"): f"{name}.inputs:execIn",
+    return {(name, "inputs:onStep"): f"{name}.inputs:execIn", (name, "outputs:Closed"): f"{name}.outputs:isClosed",
             (name, "inputs:Close"): f"{command}.inputs:Close", (name, "inputs:Open"): f"{command}.inputs:Open"}
 
 

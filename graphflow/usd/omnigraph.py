@@ -40,6 +40,7 @@ from graphflow.usd.graph_parts import (
 )
 from graphflow.usd.node_mapping import (
     GENERIC_PUBLISHERS,
+    GENERIC_SUBSCRIBERS,
     LEGACY_GRIPPER_COMMANDS,
     LEGACY_GRIPPER_ID,
     PICK_PLACE_ID,
@@ -51,6 +52,7 @@ from graphflow.usd.node_mapping import (
     legacy_gripper_renames,
     map_legacy_surface_gripper,
     map_old_pick_place,
+    message_field,
     missing_target,
 )
 
@@ -205,8 +207,8 @@ def _import_one(stage, graph_prim, label: str, registry: Registry, skip_unknown:
     bundle_nodes, bundle_connections, bundle_renames = expand(node_prims, kept, registry, _value, label, warnings)
     nodes += bundle_nodes
     renames.update(bundle_renames)
-    connections = (_connections(node_prims, graph_prim.GetPath(), kept, label, warnings, renames) + extra_connections
-                   + bundle_connections)
+    connections = (_connections(node_prims, graph_prim.GetPath(), kept, label, warnings, renames, registry,
+                                nodes) + extra_connections + bundle_connections)
     return {"nodes": nodes, "connections": connections, "ui": ui, "missingAssets": missing_assets,
             "variables": graph_variables(graph_prim, label, _value, warnings)}
 
@@ -307,8 +309,10 @@ def _has_content(prop) -> bool:
     return prop.HasAuthoredValue() or prop.HasAuthoredConnections() or prop.GetCustomDataByKey(EXTENDED_VALUE) is not None
 
 
-def _connections(node_prims, graph_path, kept: dict, label: str, warnings: list[str], renames: dict) -> list[dict]:
-    connections = []
+def _connections(node_prims, graph_path, kept: dict, label: str, warnings: list[str], renames: dict,
+                 registry: Registry, nodes: list[dict]) -> list[dict]:
+    """The graph's connections; a generic subscriber's per-field output gets a ROS2MessageField node in *nodes*."""
+    connections: list[dict] = []
     for prim in node_prims:
         if prim.GetName() not in kept:
             continue
@@ -331,6 +335,10 @@ def _connections(node_prims, graph_path, kept: dict, label: str, warnings: list[
                     # Kit lets constants be read from their input; graphflow's constants expose it as an output
                     source_name = "outputs:" + source_name.split(":", 1)[1]
                 source_name = renames.get((source_node.name, source_name), f"{source_node.name}.{source_name}")
+                if source_name and kept[source_node.name].spec.id in GENERIC_SUBSCRIBERS and \
+                        _missing_port(kept, source_name):
+                    source_name = message_field(source_node.name, source.name, kept, registry, nodes, connections,
+                                                f"{label}: node '{source_node.name}'", warnings)
                 gone = ("its source port was removed in this version" if source_name is None
                         else _missing_port(kept, source_name) or _missing_port(kept, destination))
                 if gone:

@@ -39,6 +39,8 @@ PRIM_KINDS = {
     ("graphflow.ReadJointState", "prim"): ARTICULATION,
     ("graphflow.LegacySurfaceGripper", "endEffectorPrim"): RIGID_BODY,
 }
+# Target inputs Kit declares and ignores (ReadVariable/WriteVariable v2 "inputs:graph"): never checked on the stage
+IGNORED_TARGETS = {("omni.graph.core.ReadVariable", "graph"), ("omni.graph.core.WriteVariable", "graph")}
 ATTRIBUTE_NODES = ("omni.graph.nodes.ReadPrimAttribute", "omni.graph.nodes.WritePrimAttribute")
 # Attributes the world reads or writes whether or not the stage authors them (graphflow.physics.world.ATTRIBUTES,
 # named here so validation never loads the physics engine; a test keeps the two in step)
@@ -190,7 +192,8 @@ def _stage_problems(document: GraphDocument, registry, reference: str, parsed: A
             kind = PRIM_KINDS.get((spec_id, name))
             node_type = registry.get(node.type)
             attribute = node_type.spec.attribute(f"inputs:{name}") if node_type is not None else None
-            if kind is None and (attribute is None or attribute.type not in ("target", "path")):
+            if kind is None and (attribute is None or attribute.type not in ("target", "path")
+                                 or (spec_id, name) in IGNORED_TARGETS):
                 continue
             for path in _paths(value):
                 message = stage.kind_problem(path, kind or ANY_PRIM)

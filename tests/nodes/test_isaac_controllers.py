@@ -2,7 +2,7 @@
 import pytest
 
 from graphflow.executor import GraphRuntimeError
-from graphflow.testing import ClockWorld, NodeHarness
+from graphflow.testing import ClockWorld, GraphHarness, NodeHarness
 
 from .fakes import FakeArticulationWorld
 
@@ -62,3 +62,25 @@ def test_run_one_simulation_frame_passes_one_pulse_per_reset():
     assert [node.compute("execIn").fired for _ in range(3)] == [{"step"}, set(), set()]
     node.reset()
     assert node.compute("execIn").fired == {"step"}
+
+
+def test_differential_controller_commands_zero_wheel_speeds_until_it_first_computes():
+    """The .ogn default of outputs:velocityCommand is [0.0, 0.0]: a graph indexing it (ArrayIndex 0 and 1 into
+    two conveyors or joints) before the first twist arrives reads stopped wheels, not an empty array."""
+    graph = GraphHarness({
+        "nodes": [{"name": "tick", "type": "omni.graph.action.OnTick"},
+                  {"name": "twist", "type": "isaacsim.ros2.bridge.ROS2SubscribeTwist", "inputs": {"topicName": "cmd"}},
+                  {"name": "drive", "type": "isaacsim.robot.wheeled_robots.DifferentialController",
+                   "inputs": {"wheelRadius": 0.1, "wheelDistance": 0.5}},
+                  {"name": "right", "type": "omni.graph.nodes.ArrayIndex", "inputs": {"index": 1}},
+                  {"name": "text", "type": "graphflow.FormatText"},
+                  {"name": "show", "type": "omni.graph.ui_nodes.PrintText"}],
+        "connections": [{"src": "tick.outputs:tick", "dst": "twist.inputs:execIn"},
+                        {"src": "twist.outputs:execOut", "dst": "drive.inputs:execIn"},
+                        {"src": "tick.outputs:tick", "dst": "show.inputs:execIn"},
+                        {"src": "drive.outputs:velocityCommand", "dst": "right.inputs:array"},
+                        {"src": "right.outputs:value", "dst": "text.inputs:value"},
+                        {"src": "text.outputs:text", "dst": "show.inputs:text"}]})
+    graph.run(2)
+    assert graph.output("right", "value") == 0.0
+    assert graph.compute_counts["drive"] == 0

@@ -96,3 +96,25 @@ def test_written_value_is_converted_to_the_variable_type():
 def test_unset_or_mistyped_value_is_a_clear_error(value, message):
     with pytest.raises(GraphRuntimeError, match=message):
         _write_graph(value).run(ticks=1)
+
+
+def test_kits_ignored_graph_and_target_path_inputs_leave_the_graphs_own_variable_in_use():
+    """ReadVariable/WriteVariable v2 declare inputs:graph and inputs:targetPath as ignored (Kit's node library)."""
+    g = GraphHarness({
+        "variables": [{"name": "speed", "type": "float", "default": 0.5}],
+        "nodes": [
+            {"name": "tick", "type": "omni.graph.action.OnTick"},
+            {"name": "read", "type": "omni.graph.core.ReadVariable",
+             "inputs": {"variableName": "speed", "graph": ["/World/Other/Graph"], "targetPath": "/World/Other"}},
+            {"name": "add", "type": "omni.graph.nodes.Add", "inputs": {"b": 0.25}},
+            {"name": "write", "type": "omni.graph.core.WriteVariable",
+             "inputs": {"variableName": "speed", "graph": ["/World/Other/Graph"], "targetPath": "/World/Other"}},
+        ],
+        "connections": [
+            {"src": "tick.outputs:tick", "dst": "write.inputs:execIn"},
+            {"src": "read.outputs:value", "dst": "add.inputs:a"},
+            {"src": "add.outputs:sum", "dst": "write.inputs:value"},
+        ],
+    })
+    g.run(ticks=2)
+    assert g.instance.variables["speed"] == pytest.approx(1.0)

@@ -176,3 +176,47 @@ def test_an_ackermann_drive_published_is_the_drive_its_subscriber_reads():
     out = reader.outputs
     assert (out.frameId, out.timeStamp, out.speed, out.acceleration, out.jerk) == ("base_link", 2.5, 1.5, 0.5, 0.0)
     assert out.steeringAngle == pytest.approx(0.3)      # float32 in the message
+
+
+def test_joint_state_from_an_isaac_read_joint_state_reading_is_converted_as_isaacs_writer_converts_it():
+    """Isaac Sim 6's preferred path: the reading's arrays, prismatic values x 1/metersPerUnit, revolute efforts
+    x 1/metersPerUnit^2, every value rounded to 1e-4, stamped with sensorTime when it is positive."""
+    reading = {"jointNames": ["shoulder", "slider"], "jointPositions": [0.123456, 0.3], "jointVelocities": [-1.0, 0.25],
+               "jointEfforts": [2.0, 4.0], "jointDofTypes": [0, 1], "stageMetersPerUnit": 0.5, "sensorTime": 2.5,
+               "timeStamp": 9.0}
+    node = NodeHarness(BRIDGE + "ROS2PublishJointState", reading)
+    node.compute("execIn")
+    (topic, type_name, message), = _published(node.world)
+    assert (topic, type_name) == ("/joint_states", "sensor_msgs/msg/JointState")
+    assert message["header"]["stamp"] == {"sec": 2, "nanosec": 500_000_000}
+    assert message["name"] == ["shoulder", "slider"]
+    assert message["position"] == [0.1235, 0.6] and message["velocity"] == [-1.0, 0.5]
+    assert message["effort"] == [8.0, 8.0]
+
+
+def test_joint_state_refuses_a_reading_whose_arrays_disagree_or_nothing_to_publish():
+    node = NodeHarness(BRIDGE + "ROS2PublishJointState", {"jointNames": ["a", "b"], "jointPositions": [0.0],
+                                                          "jointVelocities": [0.0, 0.0], "jointEfforts": [0.0, 0.0],
+                                                          "jointDofTypes": [0, 0], "stageMetersPerUnit": 1.0})
+    with pytest.raises(GraphRuntimeError, match="one entry per joint .*2 names, 1 positions"):
+        node.compute("execIn")
+    with pytest.raises(GraphRuntimeError, match="no Isaac Read Joint State arrays are connected"):
+        NodeHarness(BRIDGE + "ROS2PublishJointState", {}).compute("execIn")
+
+
+def test_a_message_field_reads_nested_and_array_fields_and_names_a_missing_one():
+    """graphflow.ROS2MessageField: Kit's field output names ('data', 'header:stamp:sec') on the JSON message."""
+    message = json.dumps({"header": {"stamp": {"sec": 3, "nanosec": 5}, "frame_id": "odom"}, "data": [1.0, 2.5]})
+    nested = NodeHarness("graphflow.ROS2MessageField", {"message": message, "field": "header:stamp:sec"})
+    assert nested.compute().outputs["value"] == 3
+    array = NodeHarness("graphflow.ROS2MessageField", {"message": message, "field": "data"})
+    assert array.compute().outputs["value"] == (1.0, 2.5)
+    with pytest.raises(GraphRuntimeError, match="no field 'seq' .*fields: frame_id, stamp"):
+        NodeHarness("graphflow.ROS2MessageField", {"message": message, "field": "header:seq"}).compute()
+
+
+def test_generic_subscriber_holds_the_types_defaults_until_the_first_message():
+    """As Kit's per-field outputs hold their defaults: std_msgs/Float32 data 0.0, execOut not fired."""
+    node = NodeHarness(BRIDGE + "ROS2Subscriber", {"topicName": "/pan", "messageName": "Float32"})
+    assert node.tick("execIn").fired == set()
+    assert json.loads(node.outputs.message) == {"data": 0.0}

@@ -81,8 +81,10 @@ PATHS_ONLY = ("omni.graph.nodes.GetPrimPaths", "omni.graph.action.ForEachTarget"
               # bundle nodes whose prims pick within a bundle or name where its attributes go: no bundle, no scene
               "omni.graph.nodes.GetPrims", "omni.graph.nodes.ExtractPrim", "omni.graph.nodes.WritePrim",
               "omni.graph.nodes.WritePrimsV2")
+# Kit's variable nodes declare an ignored inputs:graph target (validate.stage_names.IGNORED_TARGETS)
+IGNORED_TARGETS_ONLY = ("omni.graph.core.ReadVariable", "omni.graph.core.WriteVariable")
 STAGE_TYPES = [t for t in TYPES if any(a.type in ("target", "path") for a in t.spec.inputs)
-               and "constants" not in t.spec.categories and t.spec.id not in PATHS_ONLY]
+               and "constants" not in t.spec.categories and t.spec.id not in PATHS_ONLY + IGNORED_TARGETS_ONLY]
 
 
 @pytest.mark.parametrize("node_type", TYPES, ids=lambda t: t.spec.id)

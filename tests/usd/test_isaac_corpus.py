@@ -95,7 +95,7 @@ EXPECTED = {
     "g18_ogn_differential_controller": Runs(),
     "g19_robotiq_gripper_ros2": Runs(),   # no robot in its controller: fails on the first /isaac_gripper_state (below)
     "g20_lite6_ros2_joint_states": Fails(
-        "run", "node 'PublisherJointState': inputs:targetPrim is not set: no articulation to publish",
+        "run", "node 'PublisherJointState': inputs:targetPrim is not set and no Isaac Read Joint State arrays are connected: nothing to publish",
         "a layer meant to be sublayered into the Lite6 asset, which fills in the robot targets"),
     "g21_finsrov_ros2": Runs((
         "node 'Pose': message field inputs header:frame_id, pose:covariance gathered into 'inputs:messageFields'",

@@ -116,3 +116,56 @@ def test_rendering_nodes_drop_with_a_reason_and_generic_publisher_fields_gather(
     assert json.loads(document.node("status").inputs["messageFields"]) == {"data": "ready"}
     assert any("node 'render_product' (isaacsim.core.nodes.IsaacCreateRenderProduct): dropped: needs Kit's RTX "
                "renderer" in w for w in result.warnings)
+
+
+def test_a_generic_subscribers_field_output_is_read_from_its_message_by_a_message_field_node(tmp_path):
+    """Kit's ROS2Subscriber of std_msgs/Float32 has outputs:data; graphflow's has outputs:message (JSON)."""
+    result = _import(tmp_path, '''
+        def OmniGraphNode "speed_sub"
+        {
+            token node:type = "isaacsim.ros2.bridge.ROS2Subscriber"
+            int node:typeVersion = 1
+            custom string inputs:messageName = "Float32"
+            custom string inputs:topicName = "speed"
+            custom uint inputs:execIn
+            prepend uint inputs:execIn.connect = </World/ActionGraph/on_tick.outputs:tick>
+            custom float outputs:data
+        }
+        def OmniGraphNode "show"
+        {
+            token node:type = "omni.graph.nodes.ToString"
+            int node:typeVersion = 1
+            custom token inputs:value
+            prepend token inputs:value.connect = </World/ActionGraph/speed_sub.outputs:data>
+        }
+''')
+    document = result.document
+    assert document.node("speed_sub_data").inputs == {"field": "data"}
+    assert {(c.src, c.dst) for c in document.connections} >= {
+        ("speed_sub.outputs:message", "speed_sub_data.inputs:message"),
+        ("speed_sub_data.outputs:value", "show.inputs:value")}
+    assert any("output 'outputs:data': Kit's per-field output read from outputs:message by node 'speed_sub_data'"
+               in line for line in result.warnings)
+
+
+def test_v1_surface_gripper_closed_output_is_the_legacy_grippers_is_closed(tmp_path):
+    """v1's outputs:Closed ("Surface gripper is closed or not", the 4.x .ogn) reads LegacySurfaceGripper.isClosed."""
+    result = _import(tmp_path, '''
+        def OmniGraphNode "gripper"
+        {
+            token node:type = "omni.isaac.surface_gripper.SurfaceGripper"
+            int node:typeVersion = 1
+            custom rel inputs:ParentRigidBody = </World/Tool>
+            custom uint inputs:onStep
+            prepend uint inputs:onStep.connect = </World/ActionGraph/on_tick.outputs:tick>
+            custom bool outputs:Closed
+        }
+        def OmniGraphNode "show"
+        {
+            token node:type = "omni.graph.nodes.ToString"
+            int node:typeVersion = 1
+            custom token inputs:value
+            prepend token inputs:value.connect = </World/ActionGraph/gripper.outputs:Closed>
+        }
+''')
+    assert ("gripper.outputs:isClosed", "show.inputs:value") in {(c.src, c.dst) for c in result.document.connections}

@@ -136,3 +136,13 @@ def test_the_attributes_validation_accepts_are_the_worlds():
     )
 
     assert sorted(WORLD_BODY_ATTRIBUTES + WORLD_JOINT_ATTRIBUTES) == sorted(ATTRIBUTES)
+
+
+def test_kits_ignored_variable_graph_input_is_not_checked_on_the_stage(tmp_path):
+    """ReadVariable/WriteVariable v2 inputs:graph is ignored by Kit (the graph's own variable is used): a script
+    that names its graph's path there (no prim of the stage) validates; a real prim input still does not."""
+    def edit(graph):
+        graph.setdefault("variables", []).append({"name": "speed", "type": "float", "default": 1.0})
+        graph["nodes"].append({"name": "read_speed", "type": "omni.graph.core.ReadVariable",
+                               "inputs": {"variableName": "speed", "graph": ["/World/ConveyorGraph"]}})
+    assert _problems(_variant(tmp_path, edit))[0] == []
