@@ -105,10 +105,13 @@ def _unique_keys(pairs: list[tuple[str, Any]]) -> dict:
     return result
 
 
-def loads_strict(text: str, source: str) -> Any:
-    """Parse JSON as RFC 8259 says; FileProblem naming *source* (and the line, or the key) otherwise."""
+def loads_strict(text: str, source: str, *, non_finite: bool = False) -> Any:
+    """Parse JSON as RFC 8259 says; FileProblem naming *source* (and the line, or the key) otherwise.
+
+    *non_finite*: also read ``NaN``, ``Infinity`` and ``-Infinity`` (what graphflow's own traces write for
+    non-finite floats, as Python's json does); user files never hold them."""
     try:
-        data = json.loads(text, object_pairs_hook=_unique_keys, parse_constant=_reject_constant,
+        data = json.loads(text, object_pairs_hook=_unique_keys, parse_constant=float if non_finite else _reject_constant,
                           parse_float=_finite_float, parse_int=_checked_int)
     except json.JSONDecodeError as error:
         raise FileProblem(source, f"malformed JSON at line {error.lineno} column {error.colno}: {error.msg}") from None

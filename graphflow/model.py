@@ -6,6 +6,7 @@ all depend on it without a cycle.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
@@ -144,10 +145,19 @@ def _node_json(node: NodeDoc) -> dict:
     if node.type_version is not None:
         entry["typeVersion"] = node.type_version
     if node.inputs:
-        entry["inputs"] = dict(node.inputs)
+        entry["inputs"] = {name: _strict(value) for name, value in node.inputs.items()}
     if node.description:
         entry["description"] = node.description
     return entry
+
+
+def _strict(value):
+    """A value as strict JSON holds it: NaN and infinities as the strings "nan", "inf", "-inf" that load back."""
+    if isinstance(value, float) and not math.isfinite(value):
+        return "nan" if math.isnan(value) else ("inf" if value > 0 else "-inf")
+    if isinstance(value, (tuple, list)):
+        return [_strict(item) for item in value]
+    return value
 
 
 def _variable_json(variable: Variable) -> dict:

@@ -64,6 +64,13 @@ def quat_matrix(q: Quat) -> tuple[float, ...]:
             2.0 * (x * z - y * w), 2.0 * (y * z + x * w), 1.0 - 2.0 * (x * x + y * y))
 
 
+def pose_matrix(pose: Pose) -> tuple[float, ...]:
+    """A pose as a 4x4 matrix in USD's row-vector layout, flat: row i the rotated axis i, row 3 the position."""
+    r = quat_matrix(pose[1])
+    x, y, z = pose[0]
+    return (r[0], r[3], r[6], 0.0, r[1], r[4], r[7], 0.0, r[2], r[5], r[8], 0.0, x, y, z, 1.0)
+
+
 def quat_from_axis_angle(axis: Vec3, angle: float) -> Quat:
     half = 0.5 * angle
     s = math.sin(half)

@@ -8,7 +8,8 @@ Python representation:
     bool -> bool; int/int64/uint/uint64 -> int; float/double -> float;
     token/string -> str; double[3], quatd[4], ... -> tuple of numbers;
     T[] -> tuple of T; target -> tuple of prim path strings;
-    execution -> ExecState; any -> whatever was connected or authored.
+    execution -> ExecState; any -> whatever was connected or authored;
+    bundle -> graphflow.bundles.Bundle (set by connections only; connects only to bundle).
 
 Quaternions (quatd[4], quatf[4]) are stored (x, y, z, w) as in OmniGraph
 attributes and PyBullet.
@@ -20,6 +21,8 @@ import re
 from dataclasses import dataclass
 from enum import IntEnum
 from functools import lru_cache
+
+from graphflow.bundles import Bundle
 
 
 class ExecState(IntEnum):
@@ -64,6 +67,7 @@ INTEGER_RANGES = {"uchar": (0, 255), "int": (-2**31, 2**31 - 1), "int64": (-2**6
                   "uint64": (0, 2**64 - 1)}
 REAL_LIMITS = {"float": 3.4028234663852886e38, "half": 65504.0}
 
+EMPTY_BUNDLE = Bundle()
 _TYPE_PATTERN = re.compile(r"^(?P<base>[a-z0-9]+)(\[(?P<n>\d+)\])?(?P<array>\[\])?$")
 
 
@@ -88,10 +92,16 @@ class AttrType:
     def is_target(self) -> bool:
         return self.base == "target"
 
+    @property
+    def is_bundle(self) -> bool:
+        return self.base == "bundle"
+
     def default_value(self):
         """The value an unset attribute of this type holds."""
         if self.is_execution:
             return ExecState.DISABLED
+        if self.is_bundle:
+            return EMPTY_BUNDLE
         if self.is_array or self.is_target:
             return ()
         if self.is_any:
@@ -108,6 +118,10 @@ class AttrType:
             return _freeze(value)
         if self.is_execution:
             raise TypeMismatch(f"expected {self.name} (set by connections only), got {_show(value)}")
+        if self.is_bundle:
+            if isinstance(value, Bundle):
+                return value
+            raise TypeMismatch(f"expected a bundle (set by connections only), got {_show(value)}")
         if self.is_target:
             return _coerce_target(value, self.name)
         if self.is_array:
@@ -191,7 +205,7 @@ def _freeze(value):
 @lru_cache(maxsize=None)
 def parse_type(name: str) -> AttrType:
     """Parse a type name; raise ValueError for an unknown one."""
-    if name in ("execution", "target", "any"):
+    if name in ("execution", "target", "any", "bundle"):
         return AttrType(name, name, 0, False)
     match = _TYPE_PATTERN.match(name)
     if not match:
@@ -217,12 +231,14 @@ def element_type(array_type: AttrType) -> AttrType:
 def can_connect(source: AttrType, destination: AttrType) -> bool:
     """Whether an output of type *source* may feed an input of type *destination*.
 
-    Execution only connects to execution. ``any`` accepts and feeds every data
+    Execution only connects to execution, bundle only to bundle. ``any`` accepts and feeds every data
     type. Numeric scalars widen into each other (int -> double, float <-> double)
     when the tuple size and array-ness agree; token and string interconvert.
     """
     if source.is_execution or destination.is_execution:
         return source.is_execution and destination.is_execution
+    if source.is_bundle or destination.is_bundle:
+        return source.is_bundle and destination.is_bundle
     if source.is_any or destination.is_any:
         return True
     if source.is_target or destination.is_target:

@@ -32,6 +32,7 @@ from typing import (
     runtime_checkable,
 )
 
+from graphflow.bundles import Bundle
 from graphflow.errors import RunFailure
 from graphflow.poses import Pose, Vec3
 
@@ -229,6 +230,10 @@ class World(Protocol):
     # attributes (USD names and units)
     def get_attribute(self, prim_path: str, name: str): ...
     def set_attribute(self, prim_path: str, name: str, value) -> None: ...
+    def read_prim(self, prim_path: str, bounding_box: bool = False, time: float | None = None) -> Bundle:
+        """Every attribute of the prim as a bundle (Kit's ReadPrims child): values as composed on the stage
+        (at USD time code *time*, None: the default time), the ones the world simulates current, plus
+        ``worldMatrix`` (and the bbox attributes when asked)."""
 
     # queries
     def raycast(self, origin: Vec3, direction: Vec3, length: float) -> RayHit | None: ...
@@ -309,7 +314,7 @@ class ClockWorld:
 
     prim_pose = body_poses = prim_velocity = joint_names = joint_positions = joint_velocities = _no_physics
     joint_paths = joint_efforts = joint_dof_types = _no_physics
-    set_joint_targets = get_attribute = set_attribute = gravity = _no_physics
+    set_joint_targets = get_attribute = set_attribute = read_prim = gravity = _no_physics
     raycast = raycast_batch = contacts = body_of = same_body = _no_physics
     apply_force = gravity_enabled = set_gravity_enabled = set_collision_between = _no_physics
     prim_active = set_prim_active = _no_physics

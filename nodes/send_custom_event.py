@@ -9,12 +9,12 @@ SPEC = NodeSpec(
     version=2,
     compatible_versions=(1,),
     description=(
-        "On execIn, sends the custom event eventName with path; every OnCustomEvent listening for that name "
-        "fires on the next tick (Kit delivers it asynchronously). Kit's bundle payload has no graphflow "
-        "equivalent: graphflow has no attribute bundles, so only the path travels."),
+        "On execIn, sends the custom event eventName with path and the bundle 'bundle' as its payload; every "
+        "OnCustomEvent listening for that name fires on the next tick (Kit delivers it asynchronously)."),
     categories=("graph:action", "event"),
     ui_name="Send Custom Event",
     inputs=(
+        Attribute("bundle", "bundle", description="The payload sent with the event"),
         Attribute("execIn", "execution", description="Send the event"),
         Attribute("eventName", "token", default="", description="The name of the event"),
         Attribute("path", "token", default="", description="The path sent with the event"),
@@ -30,5 +30,5 @@ def compute(db):
         return
     if not db.inputs.eventName:
         db.error("inputs:eventName is empty: no event to send")
-    app_events(db).send(CUSTOM, db.inputs.eventName, {"!path": db.inputs.path})
+    app_events(db).send(CUSTOM, db.inputs.eventName, {"!path": db.inputs.path, "!bundle": db.inputs.bundle})
     db.outputs.execOut = ExecState.ENABLED

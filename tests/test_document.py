@@ -156,3 +156,13 @@ def test_published_schema_is_valid_json_schema():
     jsonschema.Draft202012Validator.check_schema(json_schema())
     packaged = GRAPHS.parent / "graphflow" / "schema" / "graph.schema.json"
     assert json.loads(packaged.read_text()) == json_schema()
+
+
+def test_non_finite_input_values_are_saved_as_the_strings_that_load_back():
+    from graphflow.document import dumps
+
+    document = parse_document({"format": "graphflow", "formatVersion": [1, 0], "nodes": [
+        {"name": "c", "type": "omni.graph.nodes.ConstantDouble3", "inputs": {"value": [float("nan"), float("inf"), 1.0]}}]})
+    text = dumps(document)
+    assert '"nan"' in text and '"inf"' in text and "NaN" not in text and "Infinity" not in text
+    assert parse_document(json.loads(text)).node("c").inputs["value"] == ["nan", "inf", 1.0]

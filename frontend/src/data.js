@@ -35,10 +35,25 @@ export function indexAt(entries, tick, tickOf = (entry) => entry[0]) {
   return found;
 }
 
-/** Short text for a value on a wire: numbers to 4 significant digits, arrays shortened. */
+/** Short text for a value on a wire: numbers to 4 significant digits, arrays shortened, a bundle by its size. */
 export function shortValue(value, limit = 40) {
-  const text = formatValue(value);
+  const text = isBundle(value) ? bundleSummary(value) : formatValue(value);
   return text.length > limit ? text.slice(0, limit - 1) + "…" : text;
+}
+
+/** A bundle as traces write it: {attributes: {name: value, ...}} with children: [...] when it has any. */
+export function isBundle(value) {
+  if (value === null || typeof value !== "object" || Array.isArray(value)) return false;
+  const keys = Object.keys(value);
+  return typeof value.attributes === "object" && !Array.isArray(value.attributes)
+    && keys.every((key) => key === "attributes" || (key === "children" && Array.isArray(value.children)));
+}
+
+export function bundleSummary(value) {
+  const count = Object.keys(value.attributes).length;
+  const children = value.children ? value.children.length : 0;
+  return `{${count} attribute${count === 1 ? "" : "s"}`
+    + (children ? `, ${children} child${children === 1 ? "" : "ren"}` : "") + "}";
 }
 
 export function formatValue(value) {

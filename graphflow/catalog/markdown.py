@@ -91,6 +91,8 @@ def _kind(spec: NodeSpec) -> str:
 def _default(attribute: Attribute) -> str:
     if attribute.is_execution:
         return ""
+    if attribute.attr_type.is_bundle:
+        return "empty bundle"
     if attribute.attr_type.is_any and attribute.default is None:
         return "unset"
     value = attribute.initial_value()

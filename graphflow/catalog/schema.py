@@ -37,7 +37,8 @@ def graph_schema(registry: Registry | None = None) -> dict:
 
 
 def _node_rule(spec: NodeSpec) -> dict:
-    inputs = {attribute.name: _port_schema(attribute) for attribute in spec.inputs if not attribute.is_execution}
+    inputs = {attribute.name: _port_schema(attribute) for attribute in spec.inputs
+              if not attribute.is_execution and not attribute.attr_type.is_bundle}   # set by connections only
     return {
         "if": {"properties": {"type": {"enum": [spec.id, *spec.aliases]}}, "required": ["type"]},
         "then": {"properties": {

@@ -20,6 +20,7 @@ from pathlib import Path
 from typing import Any, Iterator, NamedTuple
 
 from graphflow import __version__
+from graphflow.bundles import Bundle
 from graphflow.errors import BadInput
 
 TRACE_FORMAT = "graphflow-trace"
@@ -32,9 +33,17 @@ class TraceError(BadInput):
 
 
 def to_json_value(value: Any) -> Any:
-    """A plain JSON value for an attribute value: tuples and arrays become lists, enums their names."""
+    """A plain JSON value for an attribute value: tuples and arrays become lists, enums their names.
+
+    A bundle becomes ``{"attributes": {name: value, ...}}`` in its attribute order, with
+    ``"children": [...]`` when it has child bundles (one per prim of a ReadPrims bundle)."""
     if value is None or isinstance(value, (bool, int, float, str)):
         return value
+    if isinstance(value, Bundle):
+        data: dict[str, Any] = {"attributes": {a.name: to_json_value(a.value) for a in value.attributes}}
+        if value.children:
+            data["children"] = [to_json_value(child) for child in value.children]
+        return data
     if hasattr(value, "tolist"):       # numpy arrays and scalars
         return to_json_value(value.tolist())
     if isinstance(value, (tuple, list)):
@@ -215,7 +224,7 @@ def parse_trace(text: str, path: str | Path = "<trace>") -> Trace:
     records = []
     for number, line in enumerate(lines, start=1):
         try:
-            record = loads_strict(line, f"{path}: line {number}")
+            record = loads_strict(line, f"{path}: line {number}", non_finite=True)   # NaN, Infinity as written
         except FileProblem as error:
             if number == 1:
                 raise TraceError(f"{path}: not a graphflow trace (line 1 is not a JSON header: {error.reason})") from None

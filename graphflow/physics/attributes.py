@@ -209,6 +209,27 @@ def set_attribute(world, prim_path: str, name: str, value) -> None:
     access.set(world, prim_path, name, value)
 
 
+def read_prim(world, prim_path: str, bounding_box: bool = False, time: float | None = None):
+    """The prim's bundle: USD's composed values, with the simulated ones (``ATTRIBUTES``) read live."""
+    prim = world.stage.GetPrimAtPath(prim_path) if world.stage is not None and prim_path.startswith("/") else None
+    if not prim:
+        raise WorldError(f"no prim {prim_path} on this stage")
+
+    def live(name: str):
+        if name not in ATTRIBUTES:
+            return None
+        try:
+            return ATTRIBUTES[name].get(world, prim_path, name)
+        except WorldError:     # not simulated on this prim (a joint attribute on a body, ...): USD's value
+            return None
+
+    try:
+        pose = world.prim_pose(prim_path)
+    except WorldError:       # not placed in space (a scope, a material): no worldMatrix from physics
+        pose = None
+    return world.prim_reader.read(prim, live=live, world_pose=pose, bounding_box=bounding_box, time=time)
+
+
 def _get_usd_attribute(world, prim_path: str, name: str):
     if world.stage is not None:
         prim = world.stage.GetPrimAtPath(prim_path)

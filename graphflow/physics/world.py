@@ -34,6 +34,7 @@ from graphflow.physics.native_output import native_stdout_silenced
 from graphflow.poses import compose
 from graphflow.usd.description import StageDescription
 from graphflow.usd.errors import warn_unsupported
+from graphflow.usd.prim_bundle import PrimReader
 from graphflow.world import DEFAULT_TIME_STEP, Contact, RayHit, Services, WorldError
 
 SOLVER_ITERATIONS = 50              # PyBullet's default, stated so it stays fixed
@@ -92,6 +93,7 @@ class PyBulletWorld(SceneLookups):
             raise WorldError(f"cannot open a PyBullet {'GUI' if gui else 'DIRECT'} client: {error}") from None
         self._mesh_directory = tempfile.mkdtemp(prefix="graphflow-meshes-")
         self.services = Services()
+        self.prim_reader = PrimReader()     # what USD composed for each prim read into a bundle, kept for the run
         self.attachments = WorldAttachments(self)
         self.unsupported: list[tuple[str, str]] = list(description.unsupported)
         self._closed = False
@@ -369,6 +371,9 @@ class PyBulletWorld(SceneLookups):
 
     def set_attribute(self, prim_path: str, name: str, value) -> None:
         attributes.set_attribute(self, prim_path, name, value)
+
+    def read_prim(self, prim_path: str, bounding_box: bool = False, time: float | None = None):
+        return attributes.read_prim(self, prim_path, bounding_box, time)
 
     def set_collision_between(self, prim_a: str, prim_b: str, enabled: bool) -> None:
         a, b = self._body(prim_a), self._body(prim_b)

@@ -17,7 +17,8 @@ import math
 from dataclasses import dataclass
 from typing import Any, Hashable, Mapping, Sequence
 
-from graphflow.poses import IDENTITY_QUAT, Pose, Vec3, as_vec3, compose
+from graphflow.bundles import Bundle, BundleAttribute, type_of_value
+from graphflow.poses import IDENTITY_QUAT, Pose, Vec3, as_vec3, compose, pose_matrix
 from graphflow.world import (
     DEFAULT_TIME_STEP,
     RIGID,
@@ -279,6 +280,27 @@ class FakeWorld:
 
     def set_attribute(self, prim_path: str, name: str, value) -> None:
         self.attributes[(prim_path, name)] = value
+
+    def read_prim(self, prim_path: str, bounding_box: bool = False, time: float | None = None) -> Bundle:
+        """The stage's prim with ``attributes`` set here as its live values; without a stage, the attributes
+        set here (types from their values) and ``worldMatrix`` of a box or carried frame."""
+        try:
+            pose: Pose | None = self.prim_pose(prim_path)
+        except WorldError:
+            pose = None
+        prim = self.stage.GetPrimAtPath(prim_path) if self.stage is not None and prim_path.startswith("/") else None
+        if prim:
+            from graphflow.usd.prim_bundle import prim_bundle
+
+            return prim_bundle(prim, live=lambda name: self.attributes.get((prim_path, name)), world_pose=pose,
+                               bounding_box=bounding_box, time=time)
+        attributes = [BundleAttribute(name, type_name, value) for (path, name), value in self.attributes.items()
+                      if path == prim_path and (type_name := type_of_value(value)) is not None]
+        if pose is not None:
+            attributes.append(BundleAttribute("worldMatrix", "matrixd[16]", pose_matrix(pose)))
+        elif not attributes:
+            raise WorldError(f"no prim {prim_path} in this fake world")
+        return Bundle.of_prim(prim_path, "", tuple(attributes))
 
     # -- queries --
 

@@ -13,6 +13,7 @@ variables (graph_parts).
 """
 from __future__ import annotations
 
+import math
 import os
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -26,6 +27,7 @@ from graphflow.document import (
 )
 from graphflow.errors import BadInput
 from graphflow.registry import Registry, default_registry
+from graphflow.usd.bundle_ports import DYNAMIC_INPUTS, expand, input_sources
 from graphflow.usd.graph_parts import (
     INSTANCE_TOKEN,
     PORT_CHANGES,
@@ -202,8 +204,11 @@ def _import_one(stage, graph_prim, label: str, registry: Registry, skip_unknown:
         position = _value(prim.GetAttribute(UI_POSITION))
         if position is not None:
             ui[name] = {"pos": [round(float(c), 3) for c in position]}
-    connections = _connections(node_prims, graph_prim.GetPath(), kept, label, warnings, renames, registry,
-                               nodes) + extra_connections
+    bundle_nodes, bundle_connections, bundle_renames = expand(node_prims, kept, registry, _value, label, warnings)
+    nodes += bundle_nodes
+    renames.update(bundle_renames)
+    connections = (_connections(node_prims, graph_prim.GetPath(), kept, label, warnings, renames, registry,
+                                nodes) + extra_connections + bundle_connections)
     return {"nodes": nodes, "connections": connections, "ui": ui, "missingAssets": missing_assets,
             "variables": graph_variables(graph_prim, label, _value, warnings)}
 
@@ -237,7 +242,7 @@ def _authored_inputs(prim, node_type, label: str, warnings: list[str], removed: 
             if _has_content(prop):
                 warnings.append(f"{label}: node '{prim.GetName()}' input '{name}': not an input of graphflow's {spec.id}; dropped")
             continue
-        if attribute.is_execution:
+        if attribute.is_execution or attribute.attr_type.is_bundle:   # set by connections (bundle_ports)
             continue
         if hasattr(prop, "GetTargets"):  # a relationship: target inputs hold prim paths
             targets = [str(path) for path in prop.GetTargets()]
@@ -267,6 +272,8 @@ def _mapped_inputs(prim, node_type, label: str, warnings: list[str], problems: l
         old = {key: value for key, value in raw.items() if key in PICK_PLACE_OLD_INPUTS}
         current = _authored_inputs(prim, node_type, label, [])
         return {**current, **map_old_pick_place(old, where, warnings, problems)} if old else current
+    if spec.id in DYNAMIC_INPUTS:     # its dynamic inputs become InsertAttribute nodes (bundle_ports), named there
+        return _authored_inputs(prim, node_type, label, [])
     if spec.id in GENERIC_PUBLISHERS:
         fields = {key: value for key, value in _raw_inputs(prim).items() if spec.attribute(f"inputs:{key}") is None}
         for key in fields:
@@ -309,11 +316,8 @@ def _connections(node_prims, graph_path, kept: dict, label: str, warnings: list[
     for prim in node_prims:
         if prim.GetName() not in kept:
             continue
-        for attribute in prim.GetAttributes():
-            name = attribute.GetName()
-            if not name.startswith("inputs:"):
-                continue
-            for source in attribute.GetConnections():
+        for name, sources in input_sources(prim, kept[prim.GetName()].spec):
+            for source in sources:
                 source_node = source.GetPrimPath()
                 source_name = source.name
                 where = f"{label}: node '{prim.GetName()}' input '{name}'"
@@ -378,6 +382,8 @@ def _value(attribute):
 
 
 def _plain(value):
+    if isinstance(value, float) and not math.isfinite(value):   # graph files are strict JSON: "nan", "inf", "-inf"
+        return "nan" if math.isnan(value) else ("inf" if value > 0 else "-inf")
     if value is None or isinstance(value, (bool, int, float, str)):
         return value
     if hasattr(value, "pathString"):

@@ -94,6 +94,20 @@ def test_a_custom_event_sent_on_one_tick_fires_its_listeners_on_the_next_with_it
     assert json.loads(harness.output("bus", "payload")) == {"arg1": 42}
 
 
+def test_a_custom_events_bundle_payload_reaches_its_listener():
+    harness = GraphHarness(_graph(
+        {"name": "tick", "type": "omni.graph.action.OnTick"},
+        {"name": "payload", "type": "omni.graph.nodes.InsertAttribute",
+         "inputs": {"outputAttrName": "speed", "attrToInsert": 2.5}},
+        {"name": "send", "type": "omni.graph.action.SendCustomEvent", "inputs": {"eventName": "go"}},
+        {"name": "listen", "type": "omni.graph.action.OnCustomEvent", "inputs": {"eventName": "go"}},
+        connections=[("tick.outputs:tick", "send.inputs:execIn"), ("payload.outputs:data", "send.inputs:bundle")]))
+    harness.run(1)
+    assert harness.output("listen", "bundle").names == ()                 # delivered on the next tick
+    harness.run(1)
+    assert harness.output("listen", "bundle").get("speed").value == 2.5
+
+
 def test_exit_application_ends_the_run_after_its_tick():
     harness = GraphHarness(_graph(
         {"name": "tick", "type": "omni.graph.action.OnTick"},

@@ -119,3 +119,30 @@ def test_recorder_attaches_as_a_listener_of_the_simulation():
     simulation.step()
     simulation.step()
     assert [json.loads(line)["tick"] for line in stream.getvalue().splitlines()[1:]] == [1, 2]
+
+
+def test_non_finite_outputs_and_bundles_are_written_and_read_back():
+    """A trace writes NaN and infinities as Python's json does (docs/trace.md) and reads them back; a bundle
+    is its attributes by name."""
+    from graphflow.bundles import Bundle, BundleAttribute
+    from graphflow.observe.trace import parse_trace
+
+    bundle = Bundle.of_prim("/World/Cube", "Cube", (BundleAttribute("physics:centerOfMass", "pointf[3]",
+                                                                    (float("-inf"),) * 3),))
+    graph = GraphHarness({"nodes": [
+        {"name": "tick", "type": "omni.graph.action.OnTick", "inputs": {"onlyPlayback": False}},
+        {"name": "insert", "type": "omni.graph.nodes.InsertAttribute", "inputs": {"outputAttrName": "gap"}},
+        {"name": "inspect", "type": "omni.graph.nodes.BundleInspector"}],
+        "connections": [{"src": "tick.outputs:tick", "dst": "inspect.inputs:execIn"},
+                        {"src": "insert.outputs:data", "dst": "inspect.inputs:bundle"}]})
+    graph.instance.set_input("insert", "attrToInsert", float("nan"))
+    graph.instance.set_input("insert", "data", bundle)
+    stream = io.StringIO()
+    TraceRecorder(graph.simulation, stream)
+    graph.run(ticks=1)
+    assert "-Infinity" in stream.getvalue() and "NaN" in stream.getvalue()
+    trace = parse_trace(stream.getvalue())
+    (record,) = trace.ticks
+    shown = record["outputs"]["inspect.bundle"]["attributes"]
+    assert shown["physics:centerOfMass"] == [float("-inf")] * 3 and shown["gap"] != shown["gap"]   # NaN
+    assert shown["sourcePrimPath"] == "/World/Cube"

@@ -59,6 +59,12 @@ STAGE_INPUTS = {
     "isaacsim.core.nodes.IsaacJointNameResolver": {"robotPath": UR10, "jointNames": ["elbow_joint"]},
     "omni.graph.nodes.GetPrimDirectionVector": {"prim": CUBE, "usePath": False},
     "omni.graph.nodes.ReadPrimRelationship": {"prim": UR10 + "/root_joint", "name": "physics:body1"},
+    "omni.graph.nodes.ReadPrim": {"prim": CUBE, "computeBoundingBox": True},
+    "omni.graph.nodes.ReadPrims": {"prims": [CUBE, UR10]},
+    "omni.graph.nodes.ReadPrimsV2": {"prims": [UR10], "pathPattern": "*joint*", "typePattern": "Physics*"},
+    "omni.graph.nodes.ReadPrimBundle": {"prim": [CUBE]},
+    "omni.graph.nodes.ReadPrimsBundle": {"prims": [CUBE]},
+    "omni.graph.nodes.ReadPrimAttributes": {"prim": CUBE},
 }
 
 # types whose prim the packaged stage lacks: on it they must refuse clearly, naming the prim
@@ -71,7 +77,10 @@ PATHS_ONLY = ("omni.graph.nodes.GetPrimPaths", "omni.graph.action.ForEachTarget"
               "omni.graph.nodes.GetParentPrims", "omni.graph.nodes.GetPrimPath", "omni.graph.nodes.AppendTargetPaths",
               "omni.graph.nodes.AppendTargets", "omni.graph.nodes.CompareTargets", "omni.graph.nodes.GetTargets",
               "omni.graph.nodes.InsertTargets", "omni.graph.nodes.ReplaceTargetName", "omni.graph.nodes.ReplaceTargets",
-              "omni.graph.nodes.SelectTargetIf", "omni.graph.nodes.SetTarget")
+              "omni.graph.nodes.SelectTargetIf", "omni.graph.nodes.SetTarget",
+              # bundle nodes whose prims pick within a bundle or name where its attributes go: no bundle, no scene
+              "omni.graph.nodes.GetPrims", "omni.graph.nodes.ExtractPrim", "omni.graph.nodes.WritePrim",
+              "omni.graph.nodes.WritePrimsV2")
 # Kit's variable nodes declare an ignored inputs:graph target (validate.stage_names.IGNORED_TARGETS)
 IGNORED_TARGETS_ONLY = ("omni.graph.core.ReadVariable", "omni.graph.core.WriteVariable")
 STAGE_TYPES = [t for t in TYPES if any(a.type in ("target", "path") for a in t.spec.inputs)

@@ -5,6 +5,9 @@ import { shortValue } from "../data.js";
 import PrimPicker from "./PrimPicker.jsx";
 import { useLive } from "./liveStore.js";
 
+/** Inputs that take a value here: not execution or bundle ports, which only connections set. */
+const valued = (port) => !port.execution && port.type !== "bundle";
+
 function parsedValue(port, text) {
   if (port.tokens) return text;
   if (/^(u?int|int64|uint64|double|float|half)$/.test(port.type)) return Number(text);
@@ -88,11 +91,11 @@ export default function Inspector({ node, type, problems, onRename, onDelete, on
                          onBlur={() => name !== node.name && onRename(name)}
                          onKeyDown={(event) => event.key === "Enter" && name !== node.name && onRename(name)} /></label>
       <button type="button" data-action="delete" onClick={onDelete}>delete node</button>
-      {mine.filter((problem) => !(type && type.inputs.some((port) => !port.execution && problem.attribute === `inputs:${port.name}`)))
+      {mine.filter((problem) => !(type && type.inputs.some((port) => valued(port) && problem.attribute === `inputs:${port.name}`)))
         .map((problem, index) => <div key={index} className="gf-problem">{problem.message}</div>)}
       <table>
         <tbody>
-          {(type ? type.inputs.filter((port) => !port.execution) : []).map((port) => (
+          {(type ? type.inputs.filter(valued) : []).map((port) => (
             <tr key={`${node.name}-${port.name}`} title={`${port.type}: ${port.description}`}>
               <th>{port.name}</th>
               <td>{port.primKind
