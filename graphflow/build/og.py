@@ -356,6 +356,11 @@ def _source(graph: Graph, port: Any) -> str | Port:
     source = _port(port)
     if isinstance(source, Port):
         return source
+    if ".outputs_" in source and ".outputs:" not in source:   # Kit's older spelling of a bundle output
+        head, name = source.rsplit(".outputs_", 1)
+        spec = _spec_of(graph, _node_of(graph, source))
+        if spec is not None and spec.attribute(f"outputs:{name}") is not None:
+            source = f"{head}.outputs:{name}"
     if ".outputs:" in source:
         node, name = _node_of(graph, source), source.rsplit(".outputs:", 1)[1]
         spec = _spec_of(graph, node)

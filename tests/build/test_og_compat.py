@@ -113,6 +113,17 @@ def test_controller_set_connect_and_attribute_address_ports_by_their_full_path()
         og.Controller.set(f"{path}/text.inputs:formatt", "x")
 
 
+def test_a_bundle_output_in_kits_older_underscore_spelling_connects_as_the_importer_reads_it():
+    """Kit's bundle outputs were once properties named ``outputs_NAME``; scripts of that time connect them so."""
+    keys, path = og.Controller.Keys, next(_paths)
+    graph, *_ = og.Controller.edit(path, {
+        keys.CREATE_NODES: [("read", "omni.graph.nodes.ReadPrim"), ("names", "omni.graph.nodes.GetAttributeNames")],
+        keys.CONNECT: [("read.outputs_primBundle", "names.inputs:data")]})
+    assert [(c.src, c.dst) for c in graph.document.connections] == [("read.outputs:primBundle", "names.inputs:data")]
+    with pytest.raises(GraphError, match="'read.outputs_nothing' is not an output"):   # a port it does not have
+        og.Controller.edit(path, {keys.CONNECT: [("read.outputs_nothing", "names.inputs:data")]})
+
+
 def test_push_and_on_demand_graphs_build_as_action_graphs_with_one_line_each():
     """Kit's push evaluator and on-demand stage (a script calling evaluate per frame): ticked every step here."""
     keys, path = og.Controller.Keys, next(_paths)
