@@ -139,3 +139,14 @@ def test_no_private_name_is_imported_across_modules():
                     offenders += [f"{path.relative_to(ROOT)}:{node.lineno} {alias.name}" for alias in node.names
                                   if alias.name.startswith("_") and not alias.name.startswith("__")]
     assert offenders == []
+
+
+def test_every_test_folder_is_collected(pytestconfig):
+    """pytest skips folders matching ``norecursedirs`` (by default ``build``): no folder under tests/ may match one,
+    or its tests silently never run (tests/build, mirroring graphflow/build, once did not)."""
+    import fnmatch
+
+    patterns = pytestconfig.getini("norecursedirs")
+    folders = [path.name for path in (ROOT / "tests").rglob("*") if path.is_dir() and path.name != "__pycache__"]
+    assert "build" in folders
+    assert [name for name in folders if any(fnmatch.fnmatch(name, pattern) for pattern in patterns)] == []
