@@ -11,7 +11,19 @@ a given seed. Draw k comes from Python's Mersenne Twister seeded with the text
 import random
 
 from graphflow.seeding import run_seed
+from graphflow.spec import Attribute
 from graphflow.types import ExecState
+
+# the ports every Random* node has, named in each node's SPEC
+EXEC_IN = Attribute("execIn", "execution", description="Draws a new value")
+IS_NOISE = Attribute("isNoise", "bool", default=False, description="Always output the value of the given seed")
+SEED = Attribute("seed", "uint64", default=0, description="The seed used when useSeed (or isNoise) is set")
+USE_SEED = Attribute("useSeed", "bool", default=False, description="Draw from inputs:seed instead of the run's seed")
+EXEC_OUT = Attribute("execOut", "execution", description="Fires after each draw")
+DRAWS = Attribute("draws", "int", default=0, description="Values drawn so far")
+SEEDING = ("useSeed: the draws follow inputs:seed; otherwise the run's seed (graphflow run --seed) and the node's "
+           "name, so a run repeats exactly; isNoise: the same value for a given seed every time. (Kit's generator "
+           "is not published: values differ from Kit's.)")
 
 
 def compute_random(db, draw) -> None:

@@ -8,36 +8,34 @@ Draws follow graphflow's reproducible Random* contract (see nodes/_random.py).
 """
 from graphflow.spec import Attribute, NodeSpec
 from graphflow_nodes._math import MathError, elementwise
-from graphflow_nodes._random import compute_random
+from graphflow_nodes._random import DRAWS, EXEC_IN, EXEC_OUT, IS_NOISE, SEED, SEEDING, USE_SEED, compute_random
 
 SPEC = NodeSpec(
     id="omni.graph.nodes.RandomGaussian",
     version=1,
     description=(
-        "On each execIn, outputs:random = a draw from the normal distribution N(mean, stdev) per element "
-        "(log-normal exp(N(mean, stdev)) with useLog), the lower-dimension input broadcast over the other; "
-        "with mean and stdev unset, one standard normal double. useSeed: the draws follow inputs:seed; "
-        "otherwise the run's seed (graphflow run --seed) and the node's name, so a run repeats exactly; "
-        "isNoise: the same value for a given seed every time. (Kit's generator is not published: values "
-        "differ from Kit's.)"),
+        'On each execIn, outputs:random = a draw from the normal distribution N(mean, stdev) per element '
+        '(log-normal exp(N(mean, stdev)) with useLog), the lower-dimension input broadcast over the other; '
+        'with mean and stdev unset, one standard normal double. '
+        + SEEDING),
     categories=("math:operator",),
     ui_name="Random Gaussian",
     inputs=(
-        Attribute("execIn", "execution", description="Draws a new value"),
-        Attribute("isNoise", "bool", default=False, description="Always output the value of the given seed"),
+        EXEC_IN,
+        IS_NOISE,
         Attribute("mean", "any", optional=True, description="The mean(s): a number, vector, or array of them"),
         Attribute("stdev", "any", optional=True,
                   description="The standard deviation(s): a number, vector, or array of them"),
-        Attribute("seed", "uint64", default=0, description="The seed used when useSeed (or isNoise) is set"),
-        Attribute("useSeed", "bool", default=False, description="Draw from inputs:seed instead of the run's seed"),
+        SEED,
+        USE_SEED,
         Attribute("useLog", "bool", default=False, description="Draw from the log-normal distribution instead"),
     ),
     outputs=(
-        Attribute("execOut", "execution", description="Fires after each draw"),
+        EXEC_OUT,
         Attribute("random", "any", description="The random value(s), shaped as mean and stdev"),
     ),
     state=(
-        Attribute("draws", "int", default=0, description="Values drawn so far"),
+        DRAWS,
     ),
 )
 

@@ -2,29 +2,29 @@
 import math
 
 from graphflow.spec import Attribute, NodeSpec
-from graphflow_nodes._random import compute_random
+from graphflow_nodes._random import DRAWS, EXEC_IN, EXEC_OUT, IS_NOISE, SEED, SEEDING, USE_SEED, compute_random
 
 SPEC = NodeSpec(
     id="omni.graph.nodes.RandomUnitQuaternion",
     version=1,
     description=(
-        "On each execIn, outputs:random = a unit quaternion (x, y, z, w) uniformly distributed over rotations and execOut fires. useSeed: the draws follow inputs:seed; "
-        "otherwise the run's seed (graphflow run --seed) and the node's name, so a run repeats exactly; isNoise: the same value "
-        "for a given seed every time. (Kit's generator is not published: values differ from Kit's.)"),
+        'On each execIn, outputs:random = a unit quaternion (x, y, z, w) uniformly distributed over rotations'
+        ' and execOut fires. '
+        + SEEDING),
     categories=("math:operator",),
     ui_name="Random Unit Quaternion",
     inputs=(
-        Attribute("execIn", "execution", description="Draws a new value"),
-        Attribute("isNoise", "bool", default=False, description="Always output the value of the given seed"),
-        Attribute("seed", "uint64", default=0, description="The seed used when useSeed (or isNoise) is set"),
-        Attribute("useSeed", "bool", default=False, description="Draw from inputs:seed instead of the run's seed"),
+        EXEC_IN,
+        IS_NOISE,
+        SEED,
+        USE_SEED,
     ),
     outputs=(
-        Attribute("execOut", "execution", description="Fires after each draw"),
+        EXEC_OUT,
         Attribute("random", "quatf[4]", description="The random unit quaternion (x, y, z, w)"),
     ),
     state=(
-        Attribute("draws", "int", default=0, description="Values drawn so far"),
+        DRAWS,
     ),
 )
 

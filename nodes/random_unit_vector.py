@@ -2,29 +2,27 @@
 import math
 
 from graphflow.spec import Attribute, NodeSpec
-from graphflow_nodes._random import compute_random
+from graphflow_nodes._random import DRAWS, EXEC_IN, EXEC_OUT, IS_NOISE, SEED, SEEDING, USE_SEED, compute_random
 
 SPEC = NodeSpec(
     id="omni.graph.nodes.RandomUnitVector",
     version=1,
-    description=(
-        "On each execIn, outputs:random = a unit vector uniformly distributed on the sphere and execOut fires. useSeed: the draws follow inputs:seed; "
-        "otherwise the run's seed (graphflow run --seed) and the node's name, so a run repeats exactly; isNoise: the same value "
-        "for a given seed every time. (Kit's generator is not published: values differ from Kit's.)"),
+    description=('On each execIn, outputs:random = a unit vector uniformly distributed on the sphere and execOut fires. '
+                 + SEEDING),
     categories=("math:operator",),
     ui_name="Random Unit Vector",
     inputs=(
-        Attribute("execIn", "execution", description="Draws a new value"),
-        Attribute("isNoise", "bool", default=False, description="Always output the value of the given seed"),
-        Attribute("seed", "uint64", default=0, description="The seed used when useSeed (or isNoise) is set"),
-        Attribute("useSeed", "bool", default=False, description="Draw from inputs:seed instead of the run's seed"),
+        EXEC_IN,
+        IS_NOISE,
+        SEED,
+        USE_SEED,
     ),
     outputs=(
-        Attribute("execOut", "execution", description="Fires after each draw"),
+        EXEC_OUT,
         Attribute("random", "vectorf[3]", description="The random unit vector"),
     ),
     state=(
-        Attribute("draws", "int", default=0, description="Values drawn so far"),
+        DRAWS,
     ),
 )
 
