@@ -23,8 +23,8 @@ SPEC = NodeSpec(
     inputs=(
         Attribute("execIn", "execution", description="Check the goal"),
         Attribute("currentPosition", "vectord[3]", default=(0.0, 0.0, 0.0), description="Robot position, m"),
-        Attribute("currentOrientation", "quatd[4]", default=(0.0, 0.0, 0.0, 1.0),
-                  description="Robot orientation (x, y, z, w)"),
+        Attribute("currentOrientation", "quatd[4]", default=(0.0, 0.0, 0.0, 0.0),
+                  description="Robot orientation (x, y, z, w; all 0: yaw 0)"),
         Attribute("target", "double[3]", default=(0.0, 0.0, 0.0), description="Target x, y (m) and yaw (rad)"),
         Attribute("targetChanged", "bool", default=False, description="Take inputs:target as the new target"),
         Attribute("thresholds", "double[2]", default=(0.1, 0.1), description="Position (m) and yaw (rad) thresholds"),

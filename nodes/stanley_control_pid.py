@@ -31,8 +31,8 @@ SPEC = NodeSpec(
     inputs=(
         Attribute("execIn", "execution", description="Compute the speeds"),
         Attribute("currentPosition", "vectord[3]", default=(0.0, 0.0, 0.0), description="Robot position, m"),
-        Attribute("currentOrientation", "quatd[4]", default=(0.0, 0.0, 0.0, 1.0),
-                  description="Robot orientation (x, y, z, w)"),
+        Attribute("currentOrientation", "quatd[4]", default=(0.0, 0.0, 0.0, 0.0),
+                  description="Robot orientation (x, y, z, w; all 0: yaw 0)"),
         Attribute("currentSpeed", "vectord[3]", default=(0.0, 0.0, 0.0), description="Robot linear velocity, m/s"),
         Attribute("maxVelocity", "double", default=1.5, description="Largest linear speed, m/s"),
         Attribute("reachedGoal", "bool[]", default=(False, False),
