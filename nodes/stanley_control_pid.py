@@ -17,6 +17,7 @@ from graphflow_nodes._wheeled import normalize_angle, yaw_of
 
 CROSS_TRACK_GAIN = 0.5
 PROFILE_MIN_SPEED = 0.05       # m/s: the slowest the speed profile gets near the goal
+NO_TARGET = (0.0, 0.0, 0.0)    # Isaac's stored target before a path arrives: turn in place at the origin
 
 SPEC = NodeSpec(
     id="isaacsim.robot.wheeled_robots.StanleyControlPID",
@@ -63,7 +64,7 @@ def compute(db):
     if reached[0] and reached[1]:
         _drive(db, 0.0, 0.0)
         return
-    if inputs.targetChanged or "x" not in path:
+    if inputs.targetChanged or ("x" not in path and inputs.pathArrays):
         _take_path(db)
     if "base" not in path:            # Isaac reads wheelBase and step once, on the first compute
         path["base"], path["step"] = inputs.wheelBase, inputs.step
@@ -74,12 +75,14 @@ def compute(db):
     x, y = inputs.currentPosition[0], inputs.currentPosition[1]
     yaw = yaw_of(inputs.currentOrientation)
     speed = math.hypot(inputs.currentSpeed[0], inputs.currentSpeed[1])
-    target = path["target"]
+    target = path.get("target", NO_TARGET)
     if math.hypot(x - target[0], y - target[1]) <= inputs.thresholds[0] or reached[0]:
         linear = 0.0
         turn = math.atan2(math.sin(target[2] - yaw), math.cos(target[2] - yaw))
         angular = min(turn * speed_gain / step, 1.0) if turn > 0 else max(turn * speed_gain / step, -1.0)
     else:
+        if "x" not in path:
+            db.error("inputs:pathArrays is empty: connect a QuinticPathPlanner's pathArrays")
         accel = speed_gain * (path["profile"][path["index"]] - speed) / step
         steer = _stanley_steer(db, x, y, yaw % (2.0 * math.pi), speed, base * speed_gain)
         steer = min(max(steer, -steering_limit), steering_limit)
