@@ -259,3 +259,19 @@ def test_physics_step_example_adds_one_on_every_step(tmp_path, cubes):
         for steps in range(1, 11):
             graph.run(1)
             assert [world.get_attribute(f"/{cube}", "physics:mass") for cube in cubes] == [2.0 + steps] * len(cubes)
+
+
+def test_read_world_pose_reports_the_composed_scale(tmp_path):
+    """Isaac decomposes the prim's world matrix, so a cube scaled (4, 1, 1) under a parent scaled 2 reads
+    (8, 2, 2); its translation is the parent's scale times its own offset."""
+    stage = tmp_path / "scaled.usda"
+    stage.write_text('#usda 1.0\n(\n    metersPerUnit = 1\n)\ndef Xform "World"\n{\n'
+                     '    double3 xformOp:scale = (2, 2, 2)\n    uniform token[] xformOpOrder = ["xformOp:scale"]\n'
+                     '    def Cube "Belt"\n    {\n        double3 xformOp:translate = (0.5, 0, 0)\n'
+                     '        double3 xformOp:scale = (4, 1, 1)\n'
+                     '        uniform token[] xformOpOrder = ["xformOp:translate", "xformOp:scale"]\n    }\n}\n')
+    with create_world(stage, time_step=1.0 / 60.0) as world:
+        outputs = NodeHarness("isaacsim.core.nodes.IsaacReadWorldPose", {"prim": ["/World/Belt"]},
+                              world=world).compute().outputs
+    assert outputs["scale"] == pytest.approx((8.0, 2.0, 2.0), rel=1e-12)
+    assert outputs["translation"] == pytest.approx((1.0, 0.0, 0.0), rel=1e-12)
