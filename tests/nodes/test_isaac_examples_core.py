@@ -356,3 +356,28 @@ def test_articulation_controller_mismatched_command_applies_nothing(panda):
         world.step()
     assert "1" in str(error.value) and "2" in str(error.value)
     assert world.joint_positions("/panda") == pytest.approx(before, abs=0.005)
+
+
+# --- IsaacArticulationState: test_articulation_state ------------------------------------------------------------
+
+PANDA_JOINTS = tuple(f"panda_joint{i}" for i in range(1, 8)) + ("panda_finger_joint1", "panda_finger_joint2")
+
+
+@pytest.mark.parametrize(("inputs", "picked"), [
+    ({"jointNames": ["panda_joint2", "panda_joint3"]}, [1, 2]), ({"jointIndices": [1, 2]}, [1, 2]),
+    ({}, list(range(9))), ({"jointNames": ["panda_joint3"]}, [2]), ({"jointIndices": [2]}, [2])])
+def test_articulation_state_examples_read_the_chosen_joints(panda, inputs, picked):
+    """Isaac's tests read joints 2 and 3 (by name, by index), all 9, or joint 3 alone of its Franka after 60 steps
+    while the arm moves, and compare positions, velocities and efforts with the articulation's own to 3 decimals.
+    Here the arm is driven (joint 3 towards 1.2) so velocities are not 0. Isaac also outputs one measured joint
+    force and torque per joint; graphflow's world does not measure joint reaction wrenches, so those are empty."""
+    world, controller = panda
+    drive = controller({"jointNames": ["panda_joint3"], "positionCommand": [1.2]})
+    _tick(drive, 30)
+    outputs = NodeHarness("isaacsim.core.nodes.IsaacArticulationState", {"robotPath": "/panda", **inputs},
+                          world=world).compute("execIn").outputs
+    assert outputs["jointNames"] == tuple(PANDA_JOINTS[i] for i in picked)
+    for output, read in (("jointPositions", world.joint_positions), ("jointVelocities", world.joint_velocities),
+                         ("measuredJointEfforts", world.joint_efforts)):
+        assert outputs[output] == pytest.approx([read("/panda")[i] for i in picked], abs=1e-3)
+    assert abs(outputs["jointVelocities"][picked.index(2)]) > 0.1   # joint 3 is on its way
