@@ -3,12 +3,14 @@
 Not a node type. An articulation (a prim with joints under it, as Isaac's
 PublishTransformTree expands it) is every rigid-body link below it, each the
 child of the link its joint's body0 names; the link no joint moves hangs off
-the parent frame. Any other prim is one frame. Frame names are prim names.
+the parent frame ("world" unless a parentPrim is set). Any other prim is one frame. Frame names are prim names.
 The structure is read from the world's USD stage; poses come from the world.
 """
 from __future__ import annotations
 
 from graphflow.poses import relative
+
+WORLD_FRAME = "world"   # the tree's parent frame when no parentPrim is set, as Isaac's nodes name it (ROS's "world")
 
 
 def frames(stage, target: str) -> list[tuple[str | None, str]]:

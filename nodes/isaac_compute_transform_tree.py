@@ -1,14 +1,14 @@
 """isaacsim.core.nodes.IsaacComputeTransformTree: a transform tree as arrays, for ROS2PublishTransformTree.
 
 The same frames as ROS2PublishTransformTree publishes (each target prim from
-parentPrim or World, an articulation as its link tree: see _tf), as parallel
+parentPrim or world, an articulation as its link tree: see _tf), as parallel
 arrays; translations in stage units, as Isaac gives them.
 """
 from graphflow.spec import Attribute, NodeSpec
 from graphflow.types import ExecState
 from graphflow.world import WorldError
 
-from ._tf import frame_name, frames, transform
+from ._tf import WORLD_FRAME, frame_name, frames, transform
 from .scale_to_from_stage_unit import meters_per_unit
 
 SPEC = NodeSpec(
@@ -17,13 +17,13 @@ SPEC = NodeSpec(
     aliases=("omni.isaac.core_nodes.IsaacComputeTransformTree",),
     description=(
         "On execIn, the transforms of targetPrims (every link of an articulation) relative to parentPrim "
-        "(World when unset): parent and child frame names (prim names), translations (stage units) and "
+        "(world when unset): parent and child frame names (prim names), translations (stage units) and "
         "orientations (x, y, z, w)."),
     categories=("isaacCore",),
     ui_name="Isaac Compute Transform Tree",
     inputs=(
         Attribute("execIn", "execution", description="Compute the tree"),
-        Attribute("parentPrim", "target", description="Frame the transforms are given in (unset: World)"),
+        Attribute("parentPrim", "target", description="Frame the transforms are given in (unset: world)"),
         Attribute("targetPrims", "target", description="Prims (or articulations) to compute transforms for"),
     ),
     outputs=(
@@ -42,7 +42,7 @@ def compute(db):
     if not db.inputs.targetPrims:
         db.error("inputs:targetPrims is not set: no prims to compute")
     parent_prim = db.inputs.parentPrim[0] if db.inputs.parentPrim else None
-    root_name = frame_name(parent_prim) if parent_prim else "World"
+    root_name = frame_name(parent_prim) if parent_prim else WORLD_FRAME
     units = meters_per_unit(db.world)
     parents, children, translations, orientations = [], [], [], []
     try:

@@ -1,6 +1,6 @@
 """isaacsim.ros2.bridge.ROS2PublishTransformTree: the poses of prims as tf2_msgs/TFMessage.
 
-Each target prim is one transform from the parent frame (parentPrim, or World
+Each target prim is one transform from the parent frame (parentPrim, or world
 when none) to the prim; an articulation stands for all its links, each from
 the link it hangs on (see _tf). When parentFrames is given (the arrays of
 IsaacComputeTransformTree), those transforms are published, their
@@ -11,7 +11,7 @@ from graphflow.types import ExecState
 from graphflow.world import WorldError
 
 from ._ros2 import common_inputs, header, publish, quaternion, vector
-from ._tf import frame_name, frames, transform
+from ._tf import WORLD_FRAME, frame_name, frames, transform
 from .scale_to_from_stage_unit import meters_per_unit
 
 SPEC = NodeSpec(
@@ -20,12 +20,12 @@ SPEC = NodeSpec(
     aliases=("omni.isaac.ros2_bridge.ROS2PublishTransformTree",),
     description=(
         "Publishes the world poses of targetPrims (every link of an articulation) relative to parentPrim "
-        "(World when unset) as a tf2_msgs/msg/TFMessage on topicName (default tf), frame ids being prim "
+        "(world when unset) as a tf2_msgs/msg/TFMessage on topicName (default tf), frame ids being prim "
         "names; or, when parentFrames is set, the given frames, translations and orientations."),
     categories=("isaacRos2",),
     ui_name="ROS2 Publish Transform Tree",
     inputs=common_inputs("tf", exec_description="Publish") + (
-        Attribute("parentPrim", "target", description="Frame the poses are given in (unset: World)"),
+        Attribute("parentPrim", "target", description="Frame the poses are given in (unset: world)"),
         Attribute("targetPrims", "target", description="Prims (or articulations) whose poses to publish"),
         Attribute("timeStamp", "double", default=0.0, description="Message stamp, s"),
         Attribute("staticPublisher", "bool", default=False,
@@ -54,7 +54,7 @@ def compute(db):
         if not inputs.targetPrims:
             db.error("inputs:targetPrims is not set: no prims to publish")
         parent_prim = inputs.parentPrim[0] if inputs.parentPrim else None
-        root_name = frame_name(parent_prim) if parent_prim else "World"
+        root_name = frame_name(parent_prim) if parent_prim else WORLD_FRAME
         transforms = []
         try:
             for target in inputs.targetPrims:

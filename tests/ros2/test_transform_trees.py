@@ -53,12 +53,12 @@ def test_an_articulation_publishes_each_link_from_the_link_it_hangs_on():
     node = NodeHarness(BRIDGE + "ROS2PublishTransformTree", {"targetPrims": ["/Robot", "/World/cube"]}, world=world)
     node.compute("execIn")
     transforms = _transforms(world)
-    assert set(transforms) == {("World", "base"), ("base", "arm"), ("World", "cube")}
+    assert set(transforms) == {("world", "base"), ("base", "arm"), ("world", "cube")}
     # the arm is 1 m along world +y and 0.5 m up from the base; the base faces +y, so that is its +x
     arm = transforms[("base", "arm")]
     assert [arm["translation"][a] for a in "xyz"] == pytest.approx([1.0, 0.0, 0.5], abs=1e-12)
     assert [arm["rotation"][a] for a in "xyzw"] == pytest.approx([0.0, 0.0, 0.0, 1.0], abs=1e-12)
-    assert transforms[("World", "cube")]["translation"] == {"x": 0.0, "y": 3.0, "z": 0.0}
+    assert transforms[("world", "cube")]["translation"] == {"x": 0.0, "y": 3.0, "z": 0.0}
 
 
 def test_a_parent_prim_frames_the_poses_and_given_arrays_pass_through():
@@ -83,7 +83,7 @@ def test_compute_transform_tree_gives_stage_units_and_publish_turns_them_into_me
     UsdGeom.SetStageMetersPerUnit(world.stage, 0.01)
     tree = NodeHarness("isaacsim.core.nodes.IsaacComputeTransformTree", {"targetPrims": ["/Robot"]}, world=world)
     outputs = tree.compute("execIn").outputs
-    assert outputs["parentFrames"] == ("World", "base") and outputs["childFrames"] == ("base", "arm")
+    assert outputs["parentFrames"] == ("world", "base") and outputs["childFrames"] == ("base", "arm")
     assert outputs["translations"][1] == pytest.approx((100.0, 0.0, 50.0), abs=1e-9)   # 1 m, 0.5 m in centimetres
     publish = NodeHarness(BRIDGE + "ROS2PublishTransformTree", {
         "parentFrames": list(outputs["parentFrames"]), "childFrames": list(outputs["childFrames"]),
