@@ -3,13 +3,15 @@
 Not a node type. An articulation (a prim with joints under it, as Isaac's
 PublishTransformTree expands it) is every rigid-body link below it, each the
 child of the link its joint's body0 names; the link no joint moves hangs off
-the parent frame ("world" unless a parentPrim is set). Any other prim is one frame. Frame names are prim names.
+the parent frame ("world" unless a parentPrim is set). Any other prim is one
+frame. Frame names are prim names, or their isaac:nameOverride when authored.
 The structure is read from the world's USD stage; poses come from the world.
 """
 from __future__ import annotations
 
 from graphflow.poses import relative
 
+NAME_OVERRIDE = "isaac:nameOverride"   # a prim attribute that renames its frame
 WORLD_FRAME = "world"   # the tree's parent frame when no parentPrim is set, as Isaac's nodes name it (ROS's "world")
 
 
@@ -42,7 +44,13 @@ def _subtree(prim):
         yield from _subtree(child)
 
 
-def frame_name(path: str) -> str:
+def frame_name(stage, path: str) -> str:
+    """The prim's ``isaac:nameOverride`` when authored and not empty (Isaac's getName), else its name."""
+    prim = stage.GetPrimAtPath(path) if stage is not None else None
+    if prim:
+        override = prim.GetAttribute(NAME_OVERRIDE).Get() if prim.HasAttribute(NAME_OVERRIDE) else None
+        if isinstance(override, str) and override:
+            return override
     return path.rstrip("/").rsplit("/", 1)[-1] or "World"
 
 

@@ -17,7 +17,8 @@ SPEC = NodeSpec(
     aliases=("omni.isaac.core_nodes.IsaacComputeTransformTree",),
     description=(
         "On execIn, the transforms of targetPrims (every link of an articulation) relative to parentPrim "
-        "(world when unset): parent and child frame names (prim names), translations (stage units) and "
+        "(world when unset): parent and child frame names (prim names or their isaac:nameOverride), "
+        "translations (stage units) and "
         "orientations (x, y, z, w)."),
     categories=("isaacCore",),
     ui_name="Isaac Compute Transform Tree",
@@ -42,15 +43,16 @@ def compute(db):
     if not db.inputs.targetPrims:
         db.error("inputs:targetPrims is not set: no prims to compute")
     parent_prim = db.inputs.parentPrim[0] if db.inputs.parentPrim else None
-    root_name = frame_name(parent_prim) if parent_prim else WORLD_FRAME
+    stage = db.world.stage
+    root_name = frame_name(stage, parent_prim) if parent_prim else WORLD_FRAME
     units = meters_per_unit(db.world)
     parents, children, translations, orientations = [], [], [], []
     try:
         for target in db.inputs.targetPrims:
             for parent, child in frames(db.world.stage, target):
                 position, orientation = transform(db.world, parent or parent_prim, child)
-                parents.append(frame_name(parent) if parent else root_name)
-                children.append(frame_name(child))
+                parents.append(frame_name(stage, parent) if parent else root_name)
+                children.append(frame_name(stage, child))
                 translations.append(tuple(c / units for c in position))
                 orientations.append(tuple(float(c) for c in orientation))
     except WorldError as error:

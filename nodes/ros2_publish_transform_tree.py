@@ -21,7 +21,7 @@ SPEC = NodeSpec(
     description=(
         "Publishes the world poses of targetPrims (every link of an articulation) relative to parentPrim "
         "(world when unset) as a tf2_msgs/msg/TFMessage on topicName (default tf), frame ids being prim "
-        "names; or, when parentFrames is set, the given frames, translations and orientations."),
+        "names (or their isaac:nameOverride); or, when parentFrames is set, the given frames, translations and orientations."),
     categories=("isaacRos2",),
     ui_name="ROS2 Publish Transform Tree",
     inputs=common_inputs("tf", exec_description="Publish") + (
@@ -54,14 +54,15 @@ def compute(db):
         if not inputs.targetPrims:
             db.error("inputs:targetPrims is not set: no prims to publish")
         parent_prim = inputs.parentPrim[0] if inputs.parentPrim else None
-        root_name = frame_name(parent_prim) if parent_prim else WORLD_FRAME
+        stage = db.world.stage
+        root_name = frame_name(stage, parent_prim) if parent_prim else WORLD_FRAME
         transforms = []
         try:
             for target in inputs.targetPrims:
                 for parent, child in frames(db.world.stage, target):
                     pose = transform(db.world, parent or parent_prim, child)
-                    transforms.append(_stamped(stamp, frame_name(parent) if parent else root_name,
-                                               frame_name(child), pose))
+                    transforms.append(_stamped(stamp, frame_name(stage, parent) if parent else root_name,
+                                               frame_name(stage, child), pose))
         except WorldError as error:
             db.error(f"inputs:targetPrims: {error}")
     publish(db, "tf2_msgs/msg/TFMessage", {"transforms": transforms})

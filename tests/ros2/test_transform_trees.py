@@ -110,3 +110,17 @@ def test_clock_subscriber_and_qos_profile():
     assert json.loads(qos.outputs["qosProfile"]) == {
         "history": "keepLast", "depth": 5, "reliability": "bestEffort", "durability": "volatile", "deadline": 0.0,
         "lifespan": 0.0, "liveliness": "systemDefault", "leaseDuration": 0.0}
+
+
+def test_a_name_override_names_the_published_frame():
+    """Isaac's pose tree names a frame by the prim's isaac:nameOverride when one is authored."""
+    from pxr import Sdf, Usd
+
+    stage = Usd.Stage.CreateInMemory()
+    stage.DefinePrim("/World/cube", "Xform").CreateAttribute("isaac:nameOverride", Sdf.ValueTypeNames.String).Set(
+        "cube_link")
+    world = FakeWorld(0.1, stage=stage)
+    world.add_box("/World/cube", (0.0, 3.0, 0.0), (0.1, 0.1, 0.1))
+    node = NodeHarness(BRIDGE + "ROS2PublishTransformTree", {"targetPrims": ["/World/cube"]}, world=world)
+    node.compute("execIn")
+    assert set(_transforms(world)) == {("world", "cube_link")}
