@@ -4,14 +4,18 @@ Not a node type. An articulation (a prim with joints under it, as Isaac's
 PublishTransformTree expands it) is every rigid-body link below it, each the
 child of the link its joint's body0 names; the link no joint moves hangs off
 the parent frame ("world" unless a parentPrim is set). Any other prim is one
-frame. Frame names are prim names, or their isaac:nameOverride when authored.
+frame. Frame names are prim names, or their isaac:nameOverride when authored. A
+camera's frame is turned to ROS's optical convention, as Isaac's nodes turn it.
 The structure is read from the world's USD stage; poses come from the world.
 """
 from __future__ import annotations
 
-from graphflow.poses import relative
+from graphflow.poses import compose, relative
 
 NAME_OVERRIDE = "isaac:nameOverride"   # a prim attribute that renames its frame
+# USD cameras look down their -z with +y up, ROS optical frames down +z with +y down: Isaac turns a camera's
+# frame 180 degrees about its own x axis before publishing it
+OPTICAL_TURN = ((0.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0))
 WORLD_FRAME = "world"   # the tree's parent frame when no parentPrim is set, as Isaac's nodes name it (ROS's "world")
 
 
@@ -55,6 +59,15 @@ def frame_name(stage, path: str) -> str:
 
 
 def transform(world, parent_path: str | None, child_path: str):
-    """The pose of *child_path* in *parent_path*'s frame (the world's when None)."""
+    """The pose of *child_path* in *parent_path*'s frame (the world's when None); a camera's frame is turned to
+    ROS's optical convention."""
     child = world.prim_pose(child_path)
+    if _is_camera(world.stage, child_path):
+        child = compose(child, OPTICAL_TURN)
     return relative(world.prim_pose(parent_path), child) if parent_path else child
+
+
+def _is_camera(stage, path: str) -> bool:
+    """A USD camera that is not an RTX lidar (which Isaac models with the camera schema too)."""
+    prim = stage.GetPrimAtPath(path) if stage is not None else None
+    return bool(prim) and prim.GetTypeName() == "Camera" and "IsaacRtxLidarSensorAPI" not in prim.GetAppliedSchemas()
