@@ -381,3 +381,43 @@ def test_articulation_state_examples_read_the_chosen_joints(panda, inputs, picke
                          ("measuredJointEfforts", world.joint_efforts)):
         assert outputs[output] == pytest.approx([read("/panda")[i] for i in picked], abs=1e-3)
     assert abs(outputs["jointVelocities"][picked.index(2)]) > 0.1   # joint 3 is on its way
+
+
+# --- IsaacJointNameResolver: test_joint_name_resolver (Isaac's Franka; here the packaged Panda) --------------------
+
+def _panda_with_overrides(tmp_path, overrides):
+    """The packaged Panda under a layer that authors isaac:nameOverride on some of its joints, as Isaac's test
+    does on its Franka."""
+    overs = "".join(f'        over "{joint}"\n        {{\n            string isaac:nameOverride = "{name}"\n        }}\n'
+                    for joint, name in overrides.items())
+    path = tmp_path / "renamed_panda.usda"
+    path.write_text(f'#usda 1.0\n(\n    subLayers = [@{PANDA.as_posix()}@]\n)\n\n'
+                    f'over "panda"\n{{\n    over "Physics"\n    {{\n{overs}    }}\n}}\n')
+    return path
+
+
+@pytest.mark.parametrize(("overrides", "names", "resolved"), [
+    ({}, ["panda_joint2", "panda_joint3"], ("panda_joint2", "panda_joint3")),
+    ({"panda_joint2": "custom_joint_2", "panda_joint3": "custom_joint_3"}, ["custom_joint_2", "custom_joint_3"],
+     ("panda_joint2", "panda_joint3")),
+    ({"panda_joint2": "renamed_joint_2"}, ["renamed_joint_2", "panda_joint3"], ("panda_joint2", "panda_joint3")),
+    ({"panda_joint4": "my_j4"}, ["my_j4"], ("panda_joint4",)),
+    ({}, ["nonexistent_joint"], ("nonexistent_joint",)),
+    ({"panda_joint1": "j1_override", "panda_joint3": "j3_override", "panda_joint5": "j5_override"},
+     ["j1_override", "panda_joint2", "j3_override", "panda_joint4", "j5_override"],
+     tuple(f"panda_joint{i}" for i in range(1, 6)))])
+@pytest.mark.parametrize("by_target", [False, True])
+def test_joint_name_resolver_examples(tmp_path, overrides, names, resolved, by_target):
+    """Isaac's tests: names that are a joint's isaac:nameOverride come back as the joint's own name, the others
+    unchanged (an unknown name passes through), in order; the robot path is echoed, given as robotPath or as
+    targetPrim. The resolved names drive the joints they name: each is one of the articulation's DOFs."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        world = create_world(str(_panda_with_overrides(tmp_path, overrides)), time_step=1.0 / 60.0)
+    with world:
+        robot = {"targetPrim": ["/panda"]} if by_target else {"robotPath": "/panda"}
+        outputs = NodeHarness("isaacsim.core.nodes.IsaacJointNameResolver", {**robot, "jointNames": names},
+                              world=world).compute("execIn").outputs
+        dofs = world.joint_names("/panda")
+    assert outputs["jointNames"] == resolved and outputs["robotPath"] == "/panda"
+    assert all(name in dofs for name in resolved if name != "nonexistent_joint")
