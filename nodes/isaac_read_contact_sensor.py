@@ -20,6 +20,8 @@ SPEC = NodeSpec(
     inputs=(
         Attribute("execIn", "execution", description="Read the sensor"),
         Attribute("csPrim", "target", description="The contact sensor prim (or its rigid body)"),
+        Attribute("useLatestData", "bool", default=False,
+                  description="Ignored (deprecated in Isaac too): every reading is the latest physics step's"),
     ),
     outputs=(
         Attribute("execOut", "execution", description="Fires after the reading"),

@@ -26,6 +26,8 @@ SPEC = NodeSpec(
         Attribute("execIn", "execution", description="Read the sensor"),
         Attribute("imuPrim", "target", description="The IMU prim"),
         Attribute("readGravity", "bool", default=True, description="Include gravity in the acceleration"),
+        Attribute("useLatestData", "bool", default=False,
+                  description="Ignored (deprecated in Isaac too): every reading is the latest physics step's"),
     ),
     outputs=(
         Attribute("execOut", "execution", description="Fires after the reading"),
