@@ -26,3 +26,15 @@ def test_system_time_is_the_runs_clock_and_repeats():
     second = GraphHarness(GRAPH)
     second.run(ticks=50)
     assert second.logs == first.logs
+
+
+def test_system_time_at_a_reference_time_is_that_time():
+    """Isaac 5's referenceTimeNumerator / referenceTimeDenominator ask for the system time at a timeline time;
+    on the run's clock that is the time itself (3/4 s), and a zero denominator means now."""
+    from graphflow.testing import NodeHarness
+
+    node = NodeHarness("isaacsim.core.nodes.IsaacReadSystemTime",
+                       {"referenceTimeNumerator": 3, "referenceTimeDenominator": 4})
+    assert node.compute().outputs["systemTime"] == 0.75
+    node.set_inputs(referenceTimeDenominator=0)
+    assert node.tick().outputs["systemTime"] == pytest.approx(node.world.time_step)
