@@ -55,6 +55,7 @@ def test_on_physics_step_fires_once_per_step_and_not_while_paused(gantry):
     result = node.tick()
     assert result.fired == {"step"}
     assert result.outputs["deltaSimulationTime"] == pytest.approx(1 / 60)
+    assert result.outputs["deltaSystemTime"] == result.outputs["deltaSimulationTime"]   # the run's clock
     assert result.outputs["simulationTime"] == pytest.approx(1 / 60)
     gantry.pause()
     assert node.tick().fired == set()
