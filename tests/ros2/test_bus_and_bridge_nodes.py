@@ -76,16 +76,25 @@ def test_a_message_that_does_not_fit_the_subscribers_type_is_a_run_time_error_na
         node.tick("execIn")
 
 
-def test_odometry_velocities_in_the_chassis_frame_unless_raw():
+def test_odometry_velocities_projected_on_the_robot_front_unless_raw():
+    """As Isaac's node: the velocities (IsaacComputeOdometry's, already in the chassis frame) are projected on the
+    fixed axes robotFront, up x front and up, whatever the orientation; raw ones go out as given. Isaac's
+    test_ros2_odometry sets robotFront (0, 1, 0): a velocity along +y is then forward, one along +x to the right."""
     yaw_90 = (0.0, 0.0, math.sin(math.pi / 4), math.cos(math.pi / 4))
-    inputs = {"orientation": yaw_90, "linearVelocity": (0.0, 2.0, 0.0), "position": (1.0, 2.0, 0.0), "timeStamp": 0.5}
+    inputs = {"orientation": yaw_90, "linearVelocity": (0.0, 2.0, 0.0), "position": (1.0, 2.0, 0.0), "timeStamp": 0.5,
+              "angularVelocity": (0.0, 0.0, 0.5)}
     node = NodeHarness(BRIDGE + "ROS2PublishOdometry", inputs)
     node.compute("execIn")
     node.set_inputs(publishRawVelocities=True)
     node.compute("execIn")
-    chassis, raw = (message for _, _, message in _published(node.world))
-    assert [chassis["twist"]["twist"]["linear"][a] for a in "xyz"] == pytest.approx([2.0, 0.0, 0.0], abs=1e-12)
+    node.set_inputs(publishRawVelocities=False, robotFront=(0.0, 3.0, 7.0), linearVelocity=(1.0, 2.0, 0.0))
+    node.compute("execIn")
+    chassis, raw, turned = (message for _, _, message in _published(node.world))
+    assert [chassis["twist"]["twist"]["linear"][a] for a in "xyz"] == [0.0, 2.0, 0.0]
     assert [raw["twist"]["twist"]["linear"][a] for a in "xyz"] == [0.0, 2.0, 0.0]
+    # front (0, 1, 0) (z dropped, normalised), side = up x front = (-1, 0, 0), up (0, 0, 1)
+    assert [turned["twist"]["twist"]["linear"][a] for a in "xyz"] == [2.0, -1.0, 0.0]
+    assert [turned["twist"]["twist"]["angular"][a] for a in "xyz"] == [0.0, 0.0, 0.5]
     assert chassis["header"] == {"stamp": {"sec": 0, "nanosec": 500_000_000}, "frame_id": "odom"}
     assert chassis["child_frame_id"] == "base_link" and chassis["pose"]["pose"]["position"]["x"] == 1.0
 
