@@ -160,12 +160,12 @@ class SceneLookups:
             return self._offsets[prim_path]
         if self.stage is None:
             raise WorldError(f"{prim_path} is not a rigid body of this stage")
-        from pxr import Gf, UsdGeom
+        from pxr import Gf
 
         prim = self.stage.GetPrimAtPath(prim_path)
         if not prim:
             raise WorldError(f"no prim {prim_path} on this stage")
-        transform = Gf.Transform(UsdGeom.XformCache().GetLocalToWorldTransform(prim))
+        transform = Gf.Transform(_local_to_world(prim))
         scale = self.description.meters_per_unit
         imaginary = transform.GetRotation().GetQuat().GetImaginary()
         x, y, z = (float(c) * scale for c in transform.GetTranslation())
@@ -197,3 +197,22 @@ class SceneLookups:
             return self.prim_pose(parent)[1]
         except WorldError:
             return (0.0, 0.0, 0.0, 1.0)
+
+
+def _local_to_world(prim):
+    """The prim's local-to-world matrix, composing the xformOps of every prim on the way, also of prims whose
+    type usd-core does not know (Isaac's sensors: OmniLidar, IsaacImuSensor...), which UsdGeom.XformCache takes
+    for identities; !resetXformStack! drops what lies above, as USD composes it."""
+    from pxr import Gf, UsdGeom
+
+    chain = []
+    while prim and not prim.IsPseudoRoot():
+        chain.append(prim)
+        prim = prim.GetParent()
+    matrix = Gf.Matrix4d(1.0)
+    for link in reversed(chain):
+        xformable = UsdGeom.Xformable(link)
+        local = xformable.GetLocalTransformation()
+        matrix = local if xformable.GetResetXformStack() else local * matrix
+    return matrix
+
