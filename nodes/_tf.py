@@ -70,4 +70,5 @@ def transform(world, parent_path: str | None, child_path: str):
 def _is_camera(stage, path: str) -> bool:
     """A USD camera that is not an RTX lidar (which Isaac models with the camera schema too)."""
     prim = stage.GetPrimAtPath(path) if stage is not None else None
-    return bool(prim) and prim.GetTypeName() == "Camera" and "IsaacRtxLidarSensorAPI" not in prim.GetAppliedSchemas()
+    return bool(prim) and prim.GetTypeName() == "Camera" and (
+        "IsaacRtxLidarSensorAPI" not in prim.GetPrimTypeInfo().GetAppliedAPISchemas())   # also when not registered

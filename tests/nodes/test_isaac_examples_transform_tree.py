@@ -18,8 +18,8 @@ STAGE_NUMBERS = itertools.count()
 
 def _stage(tmp_path, prims):
     """A metre, Z-up stage of *prims*: (path, kind, local translation, options); kind "rigid" is Isaac's 1 m,
-    1 kg rigid cube with collision, "xform" an Xform, "camera" a Camera. Options: orient (w, x, y, z), scale,
-    name (isaac:nameOverride), reset (resetXformStack)."""
+    1 kg rigid cube with collision, "xform" an Xform, "camera" a Camera, "omnilidar" an OmniLidar. Options:
+    orient (w, x, y, z), scale, name (isaac:nameOverride), reset (resetXformStack), schemas (applied API names)."""
     from pxr import Gf, Sdf, Usd, UsdGeom, UsdPhysics
 
     path = tmp_path / f"tree{next(STAGE_NUMBERS)}.usda"
@@ -28,8 +28,12 @@ def _stage(tmp_path, prims):
     UsdGeom.SetStageMetersPerUnit(stage, 1.0)
     UsdGeom.Xform.Define(stage, "/World")
     for prim_path, kind, translation, options in prims:
-        schema = {"rigid": UsdGeom.Cube, "xform": UsdGeom.Xform, "camera": UsdGeom.Camera}[kind]
-        prim = schema.Define(stage, prim_path)
+        if kind == "omnilidar":   # the new RTX lidar schema: a typed prim that is no camera
+            prim = UsdGeom.Xformable(stage.DefinePrim(prim_path, "OmniLidar"))
+        else:
+            prim = {"rigid": UsdGeom.Cube, "xform": UsdGeom.Xform, "camera": UsdGeom.Camera}[kind].Define(stage, prim_path)
+        for schema in options.get("schemas", ()):
+            prim.GetPrim().AddAppliedSchema(schema)
         if options.get("reset"):
             prim.SetResetXformStack(True)
         prim.AddTranslateOp().Set(Gf.Vec3d(*translation))
@@ -197,3 +201,69 @@ def test_parent_rotation_turns_the_relative_translation(tmp_path):
     outputs = _tree(tmp_path, [("/World/RotatedParent", "xform", (0, 0, 0), {"orient": (0.7071068, 0, 0, 0.7071068)}),
                                ("/World/Child", "rigid", (1, 0, 0), {})], ["/World/Child"], parent="/World/RotatedParent")
     assert outputs["translations"][0] == pytest.approx((0.0, -1.0, -FALL), abs=0.01)
+
+
+def test_intermediate_reset_shared_mounts_and_self_parent(tmp_path):
+    """Isaac: !resetXformStack! on a middle prim drops the outer (+10) but keeps the chain below: 5 + 1 = 6; two
+    sensors on one mount (1, 2, 0) keep their own offsets (z +1 and -1); with the body itself as parentPrim
+    the body reads 0 and its sensor its local 0.3."""
+    middle = _tree(tmp_path, [("/World/Outer", "xform", (10, 0, 0), {}),
+                              ("/World/Outer/ResetMid", "xform", (5, 0, 0), {"reset": True}),
+                              ("/World/Outer/ResetMid/Sensor", "xform", (1, 0, 0), {})], ["/World/Outer/ResetMid/Sensor"])
+    assert middle["translations"][0] == pytest.approx((6.0, 0.0, 0.0), abs=1e-6)
+    shared = _by_child(_tree(tmp_path, [("/World/Body", "rigid", (0, 0, 0), {}),
+                                        ("/World/Body/Mount", "xform", (1, 2, 0), {}),
+                                        ("/World/Body/Mount/SensorA", "xform", (0, 0, 1), {}),
+                                        ("/World/Body/Mount/SensorB", "xform", (0, 0, -1), {})],
+                             ["/World/Body/Mount/SensorA", "/World/Body/Mount/SensorB"]))
+    assert shared["SensorA"][1] == pytest.approx((1.0, 2.0, 1.0 - FALL), abs=0.01)
+    assert shared["SensorB"][1] == pytest.approx((1.0, 2.0, -1.0 - FALL), abs=0.01)
+    itself = _by_child(_tree(tmp_path, [("/World/Body", "rigid", (7, 0, 0), {}),
+                                        ("/World/Body/Sensor", "xform", (0, 0, 0.3), {})],
+                             ["/World/Body", "/World/Body/Sensor"], parent="/World/Body"))
+    assert itself["Body"][1] == pytest.approx((0.0, 0.0, 0.0), abs=1e-9)
+    assert itself["Sensor"][1] == pytest.approx((0.0, 0.0, 0.3), abs=1e-9)
+
+
+@pytest.mark.parametrize(("kind", "schemas", "turned"), [
+    ("omnilidar", ("OmniSensorGenericLidarCoreAPI",), False), ("camera", ("OmniSensorAPI",), True),
+    ("camera", ("IsaacRtxLidarSensorAPI",), False)])
+def test_lidars_are_not_turned_rtx_cameras_are(tmp_path, kind, schemas, turned):
+    """Isaac: an OmniLidar (new RTX lidar schema) and a Camera carrying IsaacRtxLidarSensorAPI (legacy RTX lidar)
+    keep the identity; a Camera with OmniSensorAPI (an RTX camera) is turned 180 degrees about x."""
+    outputs = _by_child(_tree(tmp_path, [("/World/Body", "rigid", (0, 0, 0), {}),
+                                         ("/World/Body/Sensor", kind, (0, 0, 0.5), {"schemas": schemas})],
+                              ["/World/Body", "/World/Body/Sensor"]))
+    expected = (1.0, 0.0, 0.0, 0.0) if turned else (0.0, 0.0, 0.0, 1.0)
+    assert outputs["Sensor"][2] == pytest.approx(expected, abs=1e-6)
+    assert outputs["Sensor"][1][2] == pytest.approx(0.5 - FALL, abs=0.01)
+
+
+def test_a_named_camera_under_a_scaled_mount(tmp_path):
+    """Isaac: a camera 1 m up under a mount scaled 2 reads z 2, turned, with a unit quaternion; a camera named
+    'front_rgb' by isaac:nameOverride is published under that name, still turned."""
+    scaled = _tree(tmp_path, [("/World/Mount", "xform", (0, 0, 0), {"scale": (2, 2, 2)}),
+                              ("/World/Mount/Camera", "camera", (0, 0, 1), {})], ["/World/Mount/Camera"])
+    assert scaled["translations"][0] == pytest.approx((0.0, 0.0, 2.0), abs=1e-6)
+    assert scaled["orientations"][0] == pytest.approx((1.0, 0.0, 0.0, 0.0), abs=1e-6)
+    named = _by_child(_tree(tmp_path, [("/World/Body", "rigid", (0, 0, 0), {}),
+                                       ("/World/Body/Camera", "camera", (0, 0, 0.5), {"name": "front_rgb"})],
+                            ["/World/Body", "/World/Body/Camera"]))
+    assert named["front_rgb"][2] == pytest.approx((1.0, 0.0, 0.0, 0.0), abs=1e-6)
+
+
+def test_a_sensor_follows_its_body_when_the_body_is_moved(tmp_path):
+    """Isaac: a body moved to x 4 carries its sensor (1 m above) there: x within 0.5 of 4, z of 1."""
+    with create_world(_stage(tmp_path, [("/World/Body", "rigid", (0, 0, 0), {}),
+                                        ("/World/Body/Sensor", "xform", (0, 0, 1), {})]), time_step=1 / 60) as world:
+        node = NodeHarness(TREE, {"targetPrims": ["/World/Body/Sensor"]}, world=world)
+        for _ in range(WARM_UP):
+            world.step()
+        before = node.compute("execIn").outputs["translations"][0]
+        world.set_attribute("/World/Body", "xformOp:translate", (4.0, 0.0, 0.0))
+        for _ in range(5):
+            world.step()
+        after = node.compute("execIn").outputs["translations"][0]
+    assert before == pytest.approx((0.0, 0.0, 1.0 - FALL), abs=0.01)
+    assert after[0] == pytest.approx(4.0, abs=1e-6) and after[2] == pytest.approx(1.0, abs=0.05)
+
