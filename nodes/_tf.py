@@ -4,8 +4,10 @@ Not a node type. An articulation (a prim with joints under it, as Isaac's
 PublishTransformTree expands it) is every rigid-body link below it, each the
 child of the link its joint's body0 names; the link no joint moves hangs off
 the parent frame ("world" unless a parentPrim is set). Any other prim is one
-frame. Frame names are prim names, or their isaac:nameOverride when authored. A
-camera's frame is turned to ROS's optical convention, as Isaac's nodes turn it.
+frame. Frame names are prim names, or their isaac:nameOverride when authored;
+names two prims would share are made unique as each of Isaac's nodes does it
+(pose_tree_namer, compute_tree_names). A camera's frame is turned to ROS's
+optical convention, as Isaac's nodes turn it.
 The structure is read from the world's USD stage; poses come from the world.
 """
 from __future__ import annotations
@@ -72,3 +74,51 @@ def _is_camera(stage, path: str) -> bool:
     prim = stage.GetPrimAtPath(path) if stage is not None else None
     return bool(prim) and prim.GetTypeName() == "Camera" and (
         "IsaacRtxLidarSensorAPI" not in prim.GetPrimTypeInfo().GetAppliedAPISchemas())   # also when not registered
+
+
+def pose_tree_namer(stage):
+    """Frame names as Isaac's ROS 2 pose tree gives them: first come, first named; a prim whose name is taken
+    by another prim gets its path with '_' for '/' (without the leading one)."""
+    names: dict[str, str] = {}
+    taken: set[str] = set()
+
+    def name_of(path: str) -> str:
+        if path not in names:
+            name = frame_name(stage, path)
+            if name in taken:
+                name = path.strip("/").replace("/", "_")
+            names[path] = name
+            taken.add(name)
+        return names[path]
+
+    return name_of
+
+
+def compute_tree_names(stage, paths: list[str]) -> list[str]:
+    """Frame names for *paths* as Isaac's IsaacComputeTransformTree gives them: of the prims that want one
+    name (override or prim name), the deepest path keeps it; the others take their prim name, or when that
+    is taken too, '<ancestor>_<prim name>' for the first ancestor below the first path component whose
+    name makes it free, else the path below that component with '_' for '/'."""
+    wanted = [frame_name(stage, path) for path in paths]
+    keeper: dict[str, int] = {}
+    for index, (path, name) in enumerate(zip(paths, wanted)):
+        if name not in keeper or len(path) > len(paths[keeper[name]]):
+            keeper[name] = index
+    names: list[str | None] = [name if keeper[name] == index else None for index, name in enumerate(wanted)]
+    first = paths[0].find("/", 1) if paths else -1
+    start = first if first > 0 else 0
+    for index, path in enumerate(paths):
+        if names[index] is None:
+            leaf = path.rsplit("/", 1)[-1]
+            names[index] = _free_name(stage, path, leaf, start, names) if leaf in names else leaf
+    return [name or "" for name in names]
+
+
+def _free_name(stage, path: str, leaf: str, start: int, taken) -> str:
+    slash = path.find("/", start + 1)
+    while slash != -1:
+        ancestor = frame_name(stage, path[:slash])
+        if ancestor != leaf and f"{ancestor}_{leaf}" not in taken:
+            return f"{ancestor}_{leaf}"
+        slash = path.find("/", slash + 1)
+    return path[start:].lstrip("/").replace("/", "_")

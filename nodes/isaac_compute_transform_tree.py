@@ -8,7 +8,7 @@ from graphflow.spec import Attribute, NodeSpec
 from graphflow.types import ExecState
 from graphflow.world import WorldError
 
-from ._tf import WORLD_FRAME, frame_name, frames, transform
+from ._tf import WORLD_FRAME, compute_tree_names, frame_name, frames, transform
 from .scale_to_from_stage_unit import meters_per_unit
 
 SPEC = NodeSpec(
@@ -46,15 +46,16 @@ def compute(db):
     stage = db.world.stage
     root_name = frame_name(stage, parent_prim) if parent_prim else WORLD_FRAME
     units = meters_per_unit(db.world)
+    pairs = [pair for target in db.inputs.targetPrims for pair in frames(stage, target)]
+    names = dict(zip((child for _, child in pairs), compute_tree_names(stage, [child for _, child in pairs])))
     parents, children, translations, orientations = [], [], [], []
     try:
-        for target in db.inputs.targetPrims:
-            for parent, child in frames(db.world.stage, target):
-                position, orientation = transform(db.world, parent or parent_prim, child)
-                parents.append(frame_name(stage, parent) if parent else root_name)
-                children.append(frame_name(stage, child))
-                translations.append(tuple(c / units for c in position))
-                orientations.append(tuple(float(c) for c in orientation))
+        for parent, child in pairs:
+            position, orientation = transform(db.world, parent or parent_prim, child)
+            parents.append((names.get(parent) or frame_name(stage, parent)) if parent else root_name)
+            children.append(names[child])
+            translations.append(tuple(c / units for c in position))
+            orientations.append(tuple(float(c) for c in orientation))
     except WorldError as error:
         db.error(f"inputs:targetPrims: {error}")
     db.outputs.parentFrames, db.outputs.childFrames = tuple(parents), tuple(children)

@@ -11,7 +11,7 @@ from graphflow.types import ExecState
 from graphflow.world import WorldError
 
 from ._ros2 import common_inputs, header, publish, quaternion, vector
-from ._tf import WORLD_FRAME, frame_name, frames, transform
+from ._tf import WORLD_FRAME, frames, pose_tree_namer, transform
 from .scale_to_from_stage_unit import meters_per_unit
 
 SPEC = NodeSpec(
@@ -54,15 +54,14 @@ def compute(db):
         if not inputs.targetPrims:
             db.error("inputs:targetPrims is not set: no prims to publish")
         parent_prim = inputs.parentPrim[0] if inputs.parentPrim else None
-        stage = db.world.stage
-        root_name = frame_name(stage, parent_prim) if parent_prim else WORLD_FRAME
+        name_of = pose_tree_namer(db.world.stage)
+        root_name = name_of(parent_prim) if parent_prim else WORLD_FRAME
         transforms = []
         try:
             for target in inputs.targetPrims:
                 for parent, child in frames(db.world.stage, target):
                     pose = transform(db.world, parent or parent_prim, child)
-                    transforms.append(_stamped(stamp, frame_name(stage, parent) if parent else root_name,
-                                               frame_name(stage, child), pose))
+                    transforms.append(_stamped(stamp, name_of(parent) if parent else root_name, name_of(child), pose))
         except WorldError as error:
             db.error(f"inputs:targetPrims: {error}")
     publish(db, "tf2_msgs/msg/TFMessage", {"transforms": transforms})

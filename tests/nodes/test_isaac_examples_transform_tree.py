@@ -267,3 +267,17 @@ def test_a_sensor_follows_its_body_when_the_body_is_moved(tmp_path):
     assert before == pytest.approx((0.0, 0.0, 1.0 - FALL), abs=0.01)
     assert after[0] == pytest.approx(4.0, abs=1e-6) and after[2] == pytest.approx(1.0, abs=0.05)
 
+
+
+def test_shared_override_goes_to_the_deepest_prim_and_duplicate_names_are_qualified(tmp_path):
+    """Isaac: a mount and its sensor both named 'shared_frame' by override: only the deeper sensor keeps it (the
+    mount falls back to 'Mount'); two links both called 'Link' under RobotA and RobotB: one keeps 'Link', the
+    other becomes 'RobotB_Link'."""
+    shared = _tree(tmp_path, [("/World/Mount", "xform", (0, 0, 0), {"name": "shared_frame"}),
+                              ("/World/Mount/Sensor", "xform", (0, 0, 1), {"name": "shared_frame"})],
+                   ["/World/Mount", "/World/Mount/Sensor"])
+    assert shared["childFrames"] == ("Mount", "shared_frame")
+    links = _tree(tmp_path, [("/World/RobotA", "rigid", (0, 0, 0), {}), ("/World/RobotA/Link", "xform", (0, 0, 0.1), {}),
+                             ("/World/RobotB", "rigid", (5, 0, 0), {}), ("/World/RobotB/Link", "xform", (0, 0, 0.1), {})],
+                  ["/World/RobotA/Link", "/World/RobotB/Link"])
+    assert links["childFrames"] == ("Link", "RobotB_Link")

@@ -124,3 +124,23 @@ def test_a_name_override_names_the_published_frame():
     node = NodeHarness(BRIDGE + "ROS2PublishTransformTree", {"targetPrims": ["/World/cube"]}, world=world)
     node.compute("execIn")
     assert set(_transforms(world)) == {("world", "cube_link")}
+
+
+def test_duplicate_frame_names_take_their_path_as_isaacs_pose_tree():
+    """Isaac's test_duplicate_names_tree: three cubes all called 'cube' (the third renamed 'Cube_override'),
+    relative to the first: the first is 'cube', the second 'cube1_cube', the third its override."""
+    from pxr import Sdf, Usd
+
+    stage = Usd.Stage.CreateInMemory()
+    world = FakeWorld(0.1, stage=stage)
+    for index in range(3):
+        stage.DefinePrim(f"/cube{index}/cube", "Cube")
+        world.add_box(f"/cube{index}/cube", (2.0 + index, 0.0, 0.75), (0.75, 0.75, 0.75))
+    stage.GetPrimAtPath("/cube2/cube").CreateAttribute("isaac:nameOverride", Sdf.ValueTypeNames.String).Set(
+        "Cube_override")
+    node = NodeHarness(BRIDGE + "ROS2PublishTransformTree",
+                       {"targetPrims": ["/cube1/cube", "/cube2/cube"], "parentPrim": ["/cube0/cube"]}, world=world)
+    node.compute("execIn")
+    transforms = _transforms(world)
+    assert set(transforms) == {("cube", "cube1_cube"), ("cube", "Cube_override")}
+    assert [transforms[("cube", "cube1_cube")]["translation"][a] for a in "xyz"] == pytest.approx([1.0, 0.0, 0.0])
