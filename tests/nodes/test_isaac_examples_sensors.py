@@ -192,3 +192,31 @@ def Cube "Cube" (prepend apiSchemas = ["PhysicsRigidBodyAPI", "PhysicsMassAPI"])
     assert ((position[0] - centre[0]) ** 2 + (position[1] - centre[1]) ** 2) ** 0.5 == pytest.approx(0.5, abs=1e-9)
     assert outputs["linAcc"] == pytest.approx((-(2.0 ** 2) * 0.5, 0.0, 0.0), abs=0.05)
     assert outputs["angVel"] == pytest.approx((0.0, 0.0, 2.0), abs=1e-6)
+
+
+def test_joint_state_sensor_reads_the_articulation():
+    """Isaac's test_valid_joint_state_sensor_ogn (its SimpleArticulation; here the packaged Panda): after 0.5 s
+    one name per DOF and arrays of that length, DOF types (0 revolute, 1 prismatic: the Panda's 7 arm joints and
+    2 fingers), a positive metres-per-unit and time; the values are the articulation's own. Without a prim
+    Isaac outputs nothing; graphflow refuses the run with a one-line error instead."""
+    import warnings
+    from pathlib import Path
+
+    from graphflow.executor import GraphRuntimeError
+
+    panda = Path(__file__).resolve().parents[2] / "graphflow" / "assets" / "panda.usda"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        world = create_world(str(panda), time_step=1.0 / 60.0)
+    with world:
+        outputs = _read(NodeHarness("isaacsim.sensors.physics.IsaacReadJointState", {"prim": ["/panda"]}, world=world),
+                        0.5)
+        positions, velocities = world.joint_positions("/panda"), world.joint_velocities("/panda")
+        with pytest.raises(GraphRuntimeError):
+            NodeHarness("isaacsim.sensors.physics.IsaacReadJointState", world=world).compute("execIn")
+    names = outputs["jointNames"]
+    assert len(names) == 9 and all(len(outputs[key]) == 9 for key in (
+        "jointPositions", "jointVelocities", "jointEfforts", "jointDofTypes"))
+    assert outputs["jointDofTypes"] == (0,) * 7 + (1, 1)
+    assert outputs["sensorTime"] > 0.0 and outputs["stageMetersPerUnit"] > 0.0
+    assert outputs["jointPositions"] == pytest.approx(positions) and outputs["jointVelocities"] == pytest.approx(velocities)
