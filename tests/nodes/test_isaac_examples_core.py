@@ -421,3 +421,15 @@ def test_joint_name_resolver_examples(tmp_path, overrides, names, resolved, by_t
         dofs = world.joint_names("/panda")
     assert outputs["jointNames"] == resolved and outputs["robotPath"] == "/panda"
     assert all(name in dofs for name in resolved if name != "nonexistent_joint")
+
+
+def test_read_world_pose_on_a_centimetre_stage_is_in_metres(tmp_path):
+    """The .ogn documents the translation in metres, and graphflow gives metres: a cube 150 cm up reads 1.5.
+    Isaac's C++ returns the USD matrix's translation, stage units (150): a graph that scales the output by
+    ScaleToFromStageUnit in Isaac would scale it twice here; on metre stages (Isaac's default) both agree."""
+    stage = tmp_path / "cm.usda"
+    stage.write_text('#usda 1.0\n(\n    metersPerUnit = 0.01\n)\ndef Cube "Cube"\n{\n'
+                     '    double3 xformOp:translate = (0, 0, 150)\n    uniform token[] xformOpOrder = ["xformOp:translate"]\n}\n')
+    with create_world(stage, time_step=1.0 / 60.0) as world:
+        outputs = NodeHarness("isaacsim.core.nodes.IsaacReadWorldPose", {"prim": ["/Cube"]}, world=world).compute().outputs
+    assert outputs["translation"] == pytest.approx((0.0, 0.0, 1.5))
