@@ -12,7 +12,7 @@ collision shape at run time).
 """
 from __future__ import annotations
 
-from graphflow.poses import compose, relative
+from graphflow.poses import Pose, as_vec3, compose, relative
 from graphflow.world import WorldError
 
 SCALE_TOLERANCE = 1e-9
@@ -49,7 +49,8 @@ def _place_body(world, handle, translation, orientation, scale) -> None:
     if any(abs(a - b) > SCALE_TOLERANCE for a, b in zip(scale, _authored_scale(world, handle.path))):
         raise WorldError(f"{handle.path} is a simulated body: PyBullet cannot rescale its collision shapes "
                          "while running")
-    local = (tuple(float(c) for c in translation), tuple(float(c) for c in orientation))
+    x, y, z, w = (float(c) for c in orientation)
+    local: Pose = (as_vec3(translation), (x, y, z, w))
     target = compose(compose(world._parent_pose(handle.path), local), handle.inertial_in_prim)
     world.client.resetBasePositionAndOrientation(handle.body_id, target[0], target[1])
     world.client.resetBaseVelocity(handle.body_id, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0))

@@ -381,7 +381,8 @@ class FakeWorld:
     def set_local_transform(self, prim_path: str, translation, orientation, scale) -> None:
         """A box moves and turns at once; its scale is recorded (``scales``), its size stays."""
         box = self._box(prim_path)
-        box.center, box.orientation = as_vec3(translation), tuple(float(c) for c in orientation)
+        x, y, z, w = (float(c) for c in orientation)
+        box.center, box.orientation = as_vec3(translation), (x, y, z, w)
         self.scales[prim_path] = as_vec3(scale)
 
 
