@@ -155,8 +155,8 @@ class PyBulletWorld(SceneLookups):
 
     def reset(self) -> None:
         """Rebuild from the parsed stage (bit-exact initial state), then reset attachments and services."""
-        self.animation_layer.clear()
-        self.prim_reader = PrimReader()
+        for path in self.animation_layer.clear():
+            self.prim_reader.forget(path)
         self._build()
         self.attachments.reset()
         self.time = 0.0

@@ -23,6 +23,7 @@ class AnimationLayer:
     def __init__(self, stage):
         self.stage = stage
         self._layer = None
+        self._written: set[str] = set()      # prims with animated ops since the last clear
 
     def local_transform(self, prim_path: str):
         """(translation, orientation (x, y, z, w), scale) of the prim in its parent's frame, stage units."""
@@ -41,6 +42,7 @@ class AnimationLayer:
         from pxr import Gf, Sdf, Usd, UsdGeom
 
         prim = self._xformable(prim_path)
+        self._written.add(prim_path)
         session = self.stage.GetSessionLayer()
         for name in OP_ORDER + ("xformOpOrder",):
             if session.GetPropertyAtPath(Sdf.Path(prim_path).AppendProperty(name)):
@@ -59,10 +61,12 @@ class AnimationLayer:
                 order.insert(0, "!resetXformStack!")
             xformable.GetXformOpOrderAttr().Set(order)
 
-    def clear(self) -> None:
-        """Forget every animated transform (the world's reset)."""
+    def clear(self) -> list[str]:
+        """Forget every animated transform (the world's reset); the prims that had one."""
         if self._layer is not None:
             self._layer.Clear()
+        written, self._written = sorted(self._written), set()
+        return written
 
     def close(self) -> None:
         """Take the layer off the stage: a later world on the same stage starts from the file's values."""

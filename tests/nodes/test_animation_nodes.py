@@ -291,3 +291,40 @@ def test_a_speed_of_zero_fails_with_one_line(tmp_path):
         with pytest.raises(GraphRuntimeError, match=r"node 'move': inputs:speed must be > 0"):
             GraphHarness(_translate((1, 0, 0), speed=0.0), world=world).run(1)
 
+
+
+def test_move_to_transform_ends_at_the_usd_matrix_given(tmp_path):
+    goal = (Gf.Matrix4d().SetScale(Gf.Vec3d(0.5, 2.0, 1.5))
+            * Gf.Matrix4d().SetRotate(Gf.Rotation(Gf.Vec3d(1, 1, 0), 70.0))
+            * Gf.Matrix4d().SetTranslate(Gf.Vec3d(0.3, -0.2, 1.1)))
+    flat = [c for row in goal for c in row]
+    graph = _maneuver("omni.graph.nodes.MoveToTransform",
+                      {"usePath": True, "primPath": MARKER, "target": flat, "speed": 4.0})
+    with create_world(_stage(tmp_path, PLAIN), time_step=DT) as world:
+        GraphHarness(graph, world=world).run(30)
+        local = UsdGeom.Xformable(world.stage.GetPrimAtPath(MARKER)).GetLocalTransformation()
+        assert [c for row in local for c in row] == pytest.approx(flat, abs=1e-9)
+
+
+def test_rotate_to_target_takes_the_targets_world_rotation_and_keeps_its_place(tmp_path):
+    graph = _maneuver("omni.graph.nodes.RotateToTarget",
+                      {"useSourcePath": True, "sourcePrimPath": "/World/Frame/Child", "useTargetPath": True,
+                       "targetPrimPath": "/World/Goal", "speed": 4.0})
+    with create_world(_stage(tmp_path, PLAIN), time_step=DT) as world:
+        place = world.prim_pose("/World/Frame/Child")[0]
+        GraphHarness(graph, world=world).run(30)
+        position, orientation = world.prim_pose("/World/Frame/Child")
+        assert position == pytest.approx(place, abs=1e-9)
+        assert _same_rotation(orientation, _usd_quaternion((10.0, 20.0, 30.0)))
+
+
+def test_the_fake_world_moves_a_box_the_same_way():
+    from graphflow.testing.fake_world import FakeWorld
+
+    world = FakeWorld(time_step=DT)
+    world.add_box("/Box", (0.0, 0.0, 0.0), (0.1, 0.1, 0.1))
+    harness = GraphHarness(_translate((1, 0, 0), speed=2.0, prim="/Box"), world=world)
+    harness.run(26)                                  # alpha 0.5 after the pulse tick
+    assert world.prim_pose("/Box")[0] == pytest.approx((0.5, 0.0, 0.0), abs=1e-9)
+    harness.run(30)
+    assert world.prim_pose("/Box")[0] == (1.0, 0.0, 0.0) and harness.output("arrived", "count") == 1
