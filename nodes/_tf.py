@@ -72,8 +72,9 @@ def transform(world, parent_path: str | None, child_path: str):
 def _is_camera(stage, path: str) -> bool:
     """A USD camera that is not an RTX lidar (which Isaac models with the camera schema too)."""
     prim = stage.GetPrimAtPath(path) if stage is not None else None
-    return bool(prim) and prim.GetTypeName() == "Camera" and (
-        "IsaacRtxLidarSensorAPI" not in prim.GetPrimTypeInfo().GetAppliedAPISchemas())   # also when not registered
+    if prim is None or not prim or prim.GetTypeName() != "Camera":
+        return False
+    return "IsaacRtxLidarSensorAPI" not in prim.GetPrimTypeInfo().GetAppliedAPISchemas()   # also when not registered
 
 
 def pose_tree_namer(stage):
