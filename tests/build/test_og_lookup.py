@@ -68,6 +68,10 @@ def test_a_controller_object_keeps_its_graph_across_edits_and_its_attribute_for_
     value = og.Controller(og.Controller.attribute("inputs:value", text))
     value.set(4.0)
     assert value.get() == 4.0 and graph.document.node("text").inputs == {"format": "{value} m", "value": 4.0}
+    made = og.Controller()
+    made.edit({"graph_path": next(_paths), "evaluator_name": "execution"})       # the graph first, commands later
+    made.edit(edit_commands={keys.CREATE_NODES: [("tick", "omni.graph.action.OnTick")]})
+    assert [n.name for n in made.graph_id.nodes()] == ["tick"]
     with pytest.raises(BadInput, match="no graph given"):
         og.Controller().edit({keys.CREATE_NODES: []})
 
