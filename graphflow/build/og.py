@@ -44,7 +44,7 @@ from graphflow.usd.node_mapping import (
 MESSAGE_FIELD = "graphflow.ROS2MessageField"
 
 __all__ = ["Controller", "GraphController", "ObjectLookup", "DataView", "Type", "BaseDataType", "GraphPipelineStage",
-           "OgCompatWarning", "get_graph_by_path"]
+           "OgCompatWarning", "get_graph_by_path", "get_all_graphs"]
 
 
 class OgCompatWarning(UserWarning):
@@ -184,6 +184,8 @@ class Controller(ObjectLookup, DataView):
             graph.connect(_mapped(graph, _source(graph, src)), _mapped(graph, _port(dst)))
         for src, dst in _kept(graph, _pairs(commands.get(Keys.DISCONNECT))):
             graph.disconnect(_mapped(graph, _source(graph, src)), _mapped(graph, _port(dst)))
+        for attribute in _as_list(commands.get(Keys.DISCONNECT_ALL)):
+            _disconnect_all(graph, _port(attribute))
         values = _current(graph, _kept(graph, [(target, value) for target, value, *_type
                                                in _pairs(commands.get(Keys.SET_VALUES), width=None)], ports=1))
         if values:
@@ -205,6 +207,11 @@ class Controller(ObjectLookup, DataView):
             graph.connect(_mapped(graph, _source(graph, source)), _mapped(graph, _graph_and_port(dst)[1]))
 
     @classmethod
+    def disconnect_all(cls, attribute: Any, **_options) -> None:
+        graph, port = _graph_and_port(attribute)
+        _disconnect_all(graph, port)
+
+    @classmethod
     def disconnect(cls, src: Any, dst: Any, **_options) -> None:
         graph, source = _graph_and_port(src)
         if _kept(graph, [(source, _graph_and_port(dst)[1])]):
@@ -217,6 +224,8 @@ GraphController = Controller
 def _graph_and_port(attribute: Any) -> tuple[Graph, str | Port]:
     """The graph a full attribute path ("/ActionGraph/node.inputs:x") belongs to (the longest graph path first)."""
     text = _port(attribute)
+    if isinstance(attribute, tuple) and len(attribute) == 2 and isinstance(attribute[1], NodeHandle):
+        return attribute[1].graph, text   # ("inputs:x", node): the node's own graph
     if isinstance(text, Port):
         matches = [graph for graph in _graphs.values() if graph.document.node(text.node) is not None]
     else:
@@ -225,6 +234,20 @@ def _graph_and_port(attribute: Any) -> tuple[Graph, str | Port]:
         raise BadInput(f"og.Controller: {text}: no graph made by og.Controller.edit holds it "
                        f"(graphs: {', '.join(sorted(_graphs)) or 'none'})")
     return matches[0], text
+
+
+def _disconnect_all(graph: Graph, port: str | Port) -> None:
+    """Every connection to or from *port* broken (``DISCONNECT_ALL``)."""
+    node = _node_of(graph, port)
+    name = f"{node}.{str(port).rsplit('.', 1)[-1]}"
+    for connection in graph.document.connections:
+        if name in (connection.src, connection.dst):
+            graph.disconnect(connection.src, connection.dst)
+
+
+def get_all_graphs() -> list[Graph]:
+    """Every graph an ``edit`` made (``og.get_all_graphs``)."""
+    return list(_graphs.values())
 
 
 def _graph_of(graph_id: Any) -> Graph:

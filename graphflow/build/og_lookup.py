@@ -81,6 +81,11 @@ class Attribute:
     def get(self) -> Any:
         return value_of(self)
 
+    def set(self, value: Any) -> None:
+        """Author this input, as ``og.Controller.set(attribute, value)`` does."""
+        from graphflow.build.og import Controller  # og builds on this module; its setter is needed only here
+        Controller.set(self, value)
+
     def __str__(self) -> str:
         return self.get_path()
 

@@ -13,15 +13,15 @@ class Keys:
     DISCONNECT = "disconnect"
     DELETE_NODES = "delete_nodes"
     SET_VALUES = "set_values"
+    DISCONNECT_ALL = "disconnect_all"
     # Kit's other keys: named so a script reaches the one line saying they are not built here
     CREATE_PRIMS = "create_prims"
     EXPOSE_PRIMS = "expose_prims"
-    DISCONNECT_ALL = "disconnect_all"
     PROMOTE_ATTRIBUTES = "promote_attributes"
 
 
 SUPPORTED = (Keys.DELETE_NODES, Keys.CREATE_VARIABLES, Keys.CREATE_NODES, Keys.CREATE_ATTRIBUTES, Keys.CONNECT,
-             Keys.DISCONNECT, Keys.SET_VALUES)   # OmniGraph's order of operations within one edit
+             Keys.DISCONNECT, Keys.DISCONNECT_ALL, Keys.SET_VALUES)   # OmniGraph's order of operations within one edit
 
 
 class GraphPipelineStage:

@@ -110,3 +110,20 @@ def test_both_controllers_share_kits_keys_and_keys_not_built_here_are_refused_wi
     assert og.GraphController.Keys is og.Controller.Keys
     with pytest.raises(BadInput, match="create_prims not supported here"):
         og.Controller.edit(next(_paths), {og.Controller.Keys.CREATE_PRIMS: [("/World/Cube", "Cube")]})
+
+
+def test_disconnect_all_breaks_every_connection_of_an_attribute_and_attribute_set_authors_it():
+    keys, path = og.Controller.Keys, next(_paths)
+    graph, (tick, text), _, _ = built(path)
+    og.Controller.edit(path, {keys.CREATE_NODES: [("one", "omni.graph.ui_nodes.PrintText"),
+                                                  ("two", "omni.graph.ui_nodes.PrintText")],
+                              keys.CONNECT: [("tick.outputs:tick", "one.inputs:execIn"),
+                                             ("tick.outputs:tick", "two.inputs:execIn"),
+                                             ("text.outputs:text", "one.inputs:text")]})
+    og.Controller.edit(path, {keys.DISCONNECT_ALL: f"{path}/tick.outputs:tick"})
+    assert [(c.src, c.dst) for c in graph.document.connections] == [("text.outputs:text", "one.inputs:text")]
+    og.Controller.disconnect_all(("inputs:text", og.Controller.node(f"{path}/one")))
+    assert graph.document.connections == ()
+    og.Controller.attribute(f"{path}/text.inputs:format").set("{value} s")
+    assert graph.document.node("text").inputs == {"format": "{value} s"}
+    assert graph in og.get_all_graphs()
