@@ -87,6 +87,7 @@ class Controller(ObjectLookup, DataView):
         self.graph_id = kwargs.get("graph_id", None if own_attribute is not None else first)
         self.edit = self._edit_own              # type: ignore[method-assign]
         self.evaluate_sync = self._evaluate_own  # type: ignore[method-assign]
+        self.evaluate = self._evaluate_async_own  # type: ignore[method-assign]
         self.set = self._set_own                # type: ignore[method-assign]
 
     def _edit_own(self, *args: Any, **kwargs: Any) -> tuple:
@@ -103,6 +104,9 @@ class Controller(ObjectLookup, DataView):
 
     def _evaluate_own(self, graph_id: Any = None, **_options: Any) -> None:
         Controller.evaluate_sync(graph_id if graph_id is not None else self.graph_id)
+
+    async def _evaluate_async_own(self, graph_id: Any = None, **_options: Any) -> None:
+        self._evaluate_own(graph_id)
 
     def _set_own(self, *args: Any, **options: Any) -> None:
         """``controller.set(value)`` on its attribute, or ``controller.set(attribute, value)``."""

@@ -1,5 +1,6 @@
 """The rest of og.Controller that Isaac scripts call around edit: lookups (node, attribute, graph), get and set,
 Controller objects, create_graph/create_node, evaluate_sync; behaviour from Kit's omni.graph.core reference."""
+import asyncio
 import itertools
 import warnings
 
@@ -102,6 +103,8 @@ def test_evaluate_sync_builds_nothing_more_and_says_graphflow_run_evaluates_in_o
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", og.OgCompatWarning)
         og.Controller(path).evaluate_sync()                        # an object evaluates its own graph
+    with pytest.warns(og.OgCompatWarning, match=rf"evaluate\({path}\): not evaluated here"):
+        asyncio.run(og.Controller(graph).evaluate())              # awaited, as Kit's async tests do
     with pytest.raises(BadInput, match="the graph '/World/NotBuilt' does not exist"):
         og.Controller.evaluate_sync("/World/NotBuilt")             # Kit raises for a graph that is not there
 
