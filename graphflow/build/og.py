@@ -29,8 +29,17 @@ from pxr import Sdf
 
 from graphflow.build import og_legacy, og_lookup
 from graphflow.build.graph import Graph, NodeHandle, Port
-from graphflow.build.og_lookup import BUILT_GRAPHS, DataView, ObjectLookup
-from graphflow.build.og_names import SUPPORTED, BaseDataType, GraphPipelineStage, Keys, Type
+from graphflow.build.og_lookup import BUILT_GRAPHS, DataView, ObjectLookup, get_all_graphs, get_graph_by_path
+from graphflow.build.og_names import (
+    REMOVED_INPUTS,
+    SUPPORTED,
+    AttributeRole,
+    BaseDataType,
+    GraphPipelineStage,
+    Keys,
+    Type,
+    variable_type,
+)
 from graphflow.errors import BadInput
 from graphflow.spec import NodeSpec
 from graphflow.usd.node_mapping import (
@@ -43,21 +52,13 @@ from graphflow.usd.node_mapping import (
 
 MESSAGE_FIELD = "graphflow.ROS2MessageField"
 
-__all__ = ["Controller", "GraphController", "ObjectLookup", "DataView", "Type", "BaseDataType", "GraphPipelineStage",
-           "OgCompatWarning", "get_graph_by_path", "get_all_graphs"]
+__all__ = ["Controller", "GraphController", "ObjectLookup", "DataView", "Type", "BaseDataType", "AttributeRole",
+           "GraphPipelineStage", "OgCompatWarning", "get_graph_by_path", "get_all_graphs"]
 
 
 class OgCompatWarning(UserWarning):
     """One line about what an edit carried over differently from Kit (a dropped node, the evaluator)."""
 
-
-# Inputs Isaac 4.x scripts set that later versions of the node removed (the 4.x .ogn against today's):
-# dropped with one line saying what replaced them.
-REMOVED_INPUTS = {
-    "isaacsim.core.nodes.IsaacArticulationController": {
-        "usePath": "Isaac 4.x's switch between robotPath and targetPrim; since 4.5 robotPath is used when set, "
-                   "else targetPrim"},
-}
 
 # ``graphflow import --skip-unknown`` for scripts: set ``og.skip_unknown = True`` after the import and node types
 # graphflow lacks are left out with one line each (their connections and values too) instead of refused
@@ -66,11 +67,6 @@ skip_unknown = False
 _graphs = BUILT_GRAPHS
 _dropped: "weakref.WeakKeyDictionary[Graph, set[str]]" = weakref.WeakKeyDictionary()   # renderer nodes left out
 _legacy: "weakref.WeakKeyDictionary[Graph, set[str]]" = weakref.WeakKeyDictionary()    # Isaac 4.x grippers (v1)
-
-
-def get_graph_by_path(path: str) -> Graph | None:
-    """The graph an earlier ``edit`` made at *path* (``og.get_graph_by_path``)."""
-    return _graphs.get(path)
 
 
 class Controller(ObjectLookup, DataView):
@@ -179,7 +175,7 @@ class Controller(ObjectLookup, DataView):
             graph.delete(_node_name(name))
         for entry in _as_list(commands.get(Keys.CREATE_VARIABLES)):
             name, type_name, *default = entry
-            graph.variable(name, str(type_name), *default)
+            graph.variable(name, variable_type(type_name), *default)
         made = [_create(graph, name, type_id) for name, type_id in _pairs(commands.get(Keys.CREATE_NODES))]
         created = [og_lookup.node(node) for node in made if node is not None]
         for target, *_type in _pairs(commands.get(Keys.CREATE_ATTRIBUTES), width=None):
@@ -249,11 +245,6 @@ def _disconnect_all(graph: Graph, port: str | Port) -> None:
             graph.disconnect(connection.src, connection.dst)
 
 
-def get_all_graphs() -> list[Graph]:
-    """Every graph an ``edit`` made (``og.get_all_graphs``)."""
-    return list(_graphs.values())
-
-
 def _graph_of(graph_id: Any) -> Graph:
     if isinstance(graph_id, Graph):
         return graph_id
@@ -277,9 +268,12 @@ def _warn(line: str) -> None:
     warnings.warn(OgCompatWarning(f"og.Controller.edit: {line}"), stacklevel=4)
 
 
-def _create(graph: Graph, name: str, type_id: str) -> NodeHandle | None:
+def _create(graph: Graph, name: str, type_id: Any) -> NodeHandle | None:
     """The node, or None for a renderer/GUI type (or, with ``skip_unknown``, a type graphflow lacks), dropped with
     one line as the importer drops it."""
+    if not isinstance(type_id, str):   # a dict of edits makes a compound node in Kit
+        raise BadInput(f"og.Controller.edit: node '{name}': {type(type_id).__name__} as its type: compound nodes "
+                       "(a subgraph of edits) are not built here; give a node type id")
     reason = RENDERING_NODES.get(type_id)
     if reason is None and skip_unknown and graph.registry.get(type_id) is None and type_id != og_legacy.V1_ID:
         hint = graph.registry.suggest(type_id)

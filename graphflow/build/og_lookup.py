@@ -19,6 +19,16 @@ from graphflow.usd.node_mapping import GENERIC_PUBLISHERS, MESSAGE_FIELDS
 BUILT_GRAPHS: dict[str, Graph] = {}
 
 
+def get_graph_by_path(path: str) -> Graph | None:
+    """The graph an earlier ``edit`` made at *path* (``og.get_graph_by_path``)."""
+    return BUILT_GRAPHS.get(path)
+
+
+def get_all_graphs() -> list[Graph]:
+    """Every graph an ``edit`` made (``og.get_all_graphs``)."""
+    return list(BUILT_GRAPHS.values())
+
+
 def graph_path(graph: Graph) -> str:
     """The path an edit made *graph* at ("" for a graph built otherwise)."""
     return next((path for path, built in BUILT_GRAPHS.items() if built is graph), "")

@@ -130,3 +130,19 @@ def test_disconnect_all_breaks_every_connection_of_an_attribute_and_attribute_se
     og.Controller.attribute(f"{path}/text.inputs:format").set("{value} s")
     assert graph.document.node("text").inputs == {"format": "{value} s"}
     assert graph in og.get_all_graphs()
+
+
+def test_variables_take_kits_type_spellings_and_a_compound_node_is_refused_with_one_line():
+    """Kit's edit docs: ``keys.CREATE_VARIABLES: [("velocity", "float3"), ("count", og.Type(og.BaseDataType.FLOAT), 4)]``."""
+    keys, path = og.Controller.Keys, next(_paths)
+    graph, *_ = og.Controller.edit(path, {keys.CREATE_VARIABLES: [
+        ("velocity", "float3"), ("count", og.Type(og.BaseDataType.FLOAT), 4), ("names", "token[]"),
+        ("heading", og.Type(og.BaseDataType.DOUBLE, 3, 0, og.AttributeRole.VECTOR)),
+        ("label", og.Type(og.BaseDataType.UCHAR, 1, 1, og.AttributeRole.TEXT)), ("spin", "quatd")]})
+    assert {v.name: v.type for v in graph.document.variables} == {
+        "velocity": "float[3]", "count": "float", "names": "token[]", "heading": "vectord[3]", "label": "string",
+        "spin": "quatd[4]"}
+    harness = GraphHarness(graph.document)
+    assert harness.instance.variables["count"] == 4.0
+    with pytest.raises(BadInput, match="node 'inner': dict as its type: compound nodes .* are not built here"):
+        og.Controller.edit(path, {keys.CREATE_NODES: [("inner", {keys.CREATE_NODES: [("t", "omni.graph.action.OnTick")]})]})
