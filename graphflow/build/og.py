@@ -137,6 +137,8 @@ class Controller(ObjectLookup, DataView):
     @classmethod
     def create_node(cls, node_id: Any, node_type_id: str, **_options: Any) -> NodeHandle | None:
         """A node at ``"/Graph/name"`` or ``("name", graph)`` in a graph already made; None when dropped (one line)."""
+        if not isinstance(node_id, tuple) and "/" not in str(node_id):
+            raise BadInput(f"og.Controller.create_node: {node_id!r} names no graph (give \"/Graph/name\" or (name, graph))")
         name, graph_part = node_id if isinstance(node_id, tuple) else reversed(str(node_id).rsplit("/", 1))
         made = _create(cls._existing(graph_part), name, node_type_id)
         return og_lookup.node(made) if made is not None else None

@@ -91,6 +91,8 @@ def test_create_graph_create_node_and_connect_build_what_edit_would():
     assert not count.is_valid() and graph.document.connections == ()
     with pytest.raises(BadInput, match="the graph '/World/Elsewhere' does not exist"):
         og.Controller.create_node("/World/Elsewhere/tick", "omni.graph.action.OnTick")
+    with pytest.raises(BadInput, match="'tick' names no graph"):
+        og.Controller.create_node("tick", "omni.graph.action.OnTick")
 
 
 def test_evaluate_sync_builds_nothing_more_and_says_graphflow_run_evaluates_in_one_line():
