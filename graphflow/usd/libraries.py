@@ -22,7 +22,6 @@ PRIM_EDIT = "changes the stage's prims while running, which graphflow's world do
 GRAPH_TARGETS = "a numeric id of the graph target (Kit's internal prim handle); GraphTarget gives its path"
 VARIANTS = ("reads or switches USD variant selections; graphflow composes the stage once, at load, with the "
             "selections the file authors")
-GEOMETRY = "builds curve or tube geometry for display, which graphflow's world neither renders nor simulates"
 TIMELINE = ("drives Kit's playback timeline (play, stop, loop, seek); a graphflow run's clock is the simulation's "
             "and only moves forward")
 SETTINGS = "reads or writes Kit's settings registry, which a graphflow run does not have"
@@ -80,12 +79,12 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ConstantTexCoord2h": None, "ConstantTexCoord3d": None, "ConstantTexCoord3f": None,
         "ConstantTexCoord3h": None, "ConstantTimecode": None, "ConstantToken": None, "ConstantUChar": None,
         "ConstantUInt": None, "ConstantUInt64": None, "ConstantVector3d": None, "ConstantVector3f": None,
-        "ConstructArray": None, "CopyAttribute": None, "Cos": None, "CreateTubeTopology": GEOMETRY,
-        "CrossProduct": None, "CurveToFrame": GEOMETRY, "CurveTubePositions": GEOMETRY, "CurveTubeST": GEOMETRY,
+        "ConstructArray": None, "CopyAttribute": None, "Cos": None, "CreateTubeTopology": None,
+        "CrossProduct": None, "CurveToFrame": None, "CurveTubePositions": None, "CurveTubeST": None,
         "Distance3D": None, "Divide": None, "DotProduct": None, "EachZero": None, "Ease": None, "EndsWith": None,
         "ExtractAttribute": None, "ExtractBundle": None, "ExtractPrim": None, "FindPrims": None,
         "Floor": None, "GetAttributeNames": None, "GetGraphTargetId": GRAPH_TARGETS, "GetGraphTargetPrim": None,
-        "GetLocationAtDistanceOnCurve": GEOMETRY, "GetLocationAtDistanceOnCurve2": GEOMETRY,
+        "GetLocationAtDistanceOnCurve": None, "GetLocationAtDistanceOnCurve2": None,
         "GetMatrix4Quaternion": None, "GetMatrix4Rotation": None, "GetMatrix4RotationMatrix": None,
         "GetMatrix4Scale": None, "GetMatrix4Translation": None, "GetParentPath": None, "GetParentPrims": None,
         "GetPrimDirectionVector": None, "GetPrimLocalToWorldTransform": None, "GetPrimPath": None,
@@ -96,7 +95,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "GraphTarget": None, "HasAttribute": None, "HasVariantSet": VARIANTS, "Increment": None,
         "InsertAttribute": None, "InsertString": None, "InsertTargets": None, "Interpolator": None,
         "IsPrimActive": None, "IsPrimSelected": SELECTION, "IsZero": None, "JoinString": None,
-        "LengthAlongCurve": GEOMETRY, "LoopTimeline": TIMELINE, "Magnitude": None,
+        "LengthAlongCurve": None, "LoopTimeline": TIMELINE, "Magnitude": None,
         "MakeArray": "Kit's older Python array maker, replaced by ConstructArray; not carried over",
         "MakeMatrix2": None, "MakeMatrix3": None, "MakeMatrix4": None, "MakeTransform": None,
         "MakeTransformLookAt": None, "MakeVector2": None, "MakeVector3": None, "MakeVector4": None,
@@ -113,7 +112,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "RpResourceExampleHydra": None, "ScaleToSize": MANEUVER, "SelectIf": None, "SelectTargetIf": None,
         "SetMatrix4Quaternion": None, "SetMatrix4Rotation": None, "SetMatrix4Scale": None,
         "SetMatrix4Translation": None, "SetTarget": None, "SetTimeline": TIMELINE, "SetVariantSelection": VARIANTS,
-        "Sin": None, "SourceIndices": GEOMETRY, "StartsWith": None, "StartTimeline": TIMELINE,
+        "Sin": None, "SourceIndices": None, "StartsWith": None, "StartTimeline": TIMELINE,
         "StopTimeline": TIMELINE, "Subtract": None, "Tan": None, "Timer": None, "ToBool": None, "ToDeg": None,
         "ToDouble": None, "ToFloat": None, "ToHalf": None, "ToInt": None, "ToInt64": None, "ToRad": None,
         "ToString": None, "ToTarget": None, "ToToken": None, "ToUchar": None, "ToUint": None, "ToUint64": None,

@@ -335,6 +335,8 @@ def _connections(node_prims, graph_path, kept: dict, label: str, warnings: list[
                     # Kit lets constants be read from their input; graphflow's constants expose it as an output
                     source_name = "outputs:" + source_name.split(":", 1)[1]
                 source_name = renames.get((source_node.name, source_name), f"{source_node.name}.{source_name}")
+                if source_name and _missing_port(kept, source_name) and not _missing_port(kept, _underscored(source_name)):
+                    source_name = _underscored(source_name)   # Kit's outputs:primvars:st is primvars_st here
                 if source_name and kept[source_node.name].spec.id in GENERIC_SUBSCRIBERS and \
                         _missing_port(kept, source_name):
                     source_name = message_field(source_node.name, source.name, kept, registry, nodes, connections,
@@ -346,6 +348,12 @@ def _connections(node_prims, graph_path, kept: dict, label: str, warnings: list[
                     continue
                 connections.append({"src": source_name, "dst": destination})
     return connections
+
+
+def _underscored(endpoint: str) -> str:
+    """``node.outputs:primvars:st`` as ``node.outputs:primvars_st``: a Kit port name with colons, as its node declares it."""
+    node, group, name = endpoint.split(".", 1)[0], *endpoint.split(".", 1)[1].split(":", 1)
+    return f"{node}.{group}:{name.replace(':', '_')}"
 
 
 def _missing_port(kept: dict, endpoint: str | None) -> str | None:
