@@ -127,7 +127,8 @@ def prefixed(part: dict, prefix: str) -> dict:
 # graph instancing (omni.usd.schema.omnigraph): prims with OmniGraphAPI name graphs in their omniGraphs relationship
 INSTANCE_TOKEN = "_OMNI_GRAPH_TARGET"     # Kit replaces it in prim paths with the instance's target at run time
 INSTANCES_RELATIONSHIP = "omniGraphs"
-GRAPH_TARGET_NODES = ("omni.graph.nodes.GraphTarget", "omni.graph.nodes.GetGraphTargetPrim")
+GRAPH_TARGET_NODES = ("omni.graph.nodes.GraphTarget", "omni.graph.nodes.GetGraphTargetPrim",
+                      "omni.graph.nodes.GetGraphTargetId")
 
 
 def graph_targets(stage, graph_prim, label: str, value_of, warnings: list[str]) -> list[str]:

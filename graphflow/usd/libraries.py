@@ -19,13 +19,11 @@ REAL_TIME_FACTOR = ("its one output is simulated time over wall-clock time, whic
                     "wall-clock reading is not carried into a graph")
 TEST_ONLY = "Isaac's internal test node"
 PRIM_EDIT = "changes the stage's prims while running, which graphflow's world does not do"
-GRAPH_TARGETS = "a numeric id of the graph target (Kit's internal prim handle); GraphTarget gives its path"
 VARIANTS = ("reads or switches USD variant selections; graphflow composes the stage once, at load, with the "
             "selections the file authors")
 TIMELINE = ("drives Kit's playback timeline (play, stop, loop, seek); a graphflow run's clock is the simulation's "
             "and only moves forward")
 SETTINGS = "reads or writes Kit's settings registry, which a graphflow run does not have"
-SELECTION = "reads the editor's prim selection (no editor headless)"
 MATERIALS = "reads or binds render materials, which only Kit's renderer uses"
 MANEUVER = ("animates a prim's xform ops over several ticks as an editor animation; graphflow's bodies move by "
             "physics (WritePrimLocalTransform places a free body)")
@@ -83,7 +81,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "CrossProduct": None, "CurveToFrame": None, "CurveTubePositions": None, "CurveTubeST": None,
         "Distance3D": None, "Divide": None, "DotProduct": None, "EachZero": None, "Ease": None, "EndsWith": None,
         "ExtractAttribute": None, "ExtractBundle": None, "ExtractPrim": None, "FindPrims": None,
-        "Floor": None, "GetAttributeNames": None, "GetGraphTargetId": GRAPH_TARGETS, "GetGraphTargetPrim": None,
+        "Floor": None, "GetAttributeNames": None, "GetGraphTargetId": None, "GetGraphTargetPrim": None,
         "GetLocationAtDistanceOnCurve": None, "GetLocationAtDistanceOnCurve2": None,
         "GetMatrix4Quaternion": None, "GetMatrix4Rotation": None, "GetMatrix4RotationMatrix": None,
         "GetMatrix4Scale": None, "GetMatrix4Translation": None, "GetParentPath": None, "GetParentPrims": None,
@@ -94,9 +92,9 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "GetVariantSetNames": VARIANTS, "GpuInteropCudaEntry": None, "GpuInteropRenderProductEntry": None,
         "GraphTarget": None, "HasAttribute": None, "HasVariantSet": VARIANTS, "Increment": None,
         "InsertAttribute": None, "InsertString": None, "InsertTargets": None, "Interpolator": None,
-        "IsPrimActive": None, "IsPrimSelected": SELECTION, "IsZero": None, "JoinString": None,
+        "IsPrimActive": None, "IsPrimSelected": None, "IsZero": None, "JoinString": None,
         "LengthAlongCurve": None, "LoopTimeline": TIMELINE, "Magnitude": None,
-        "MakeArray": "Kit's older Python array maker, replaced by ConstructArray; not carried over",
+        "MakeArray": None,
         "MakeMatrix2": None, "MakeMatrix3": None, "MakeMatrix4": None, "MakeTransform": None,
         "MakeTransformLookAt": None, "MakeVector2": None, "MakeVector3": None, "MakeVector4": None,
         "MatrixMultiply": None, "Maximum": None, "Minimum": None, "Modulo": None, "MoveToTarget": MANEUVER,

@@ -54,6 +54,7 @@ STAGE_INPUTS = {
     "omni.graph.nodes.ReadPrimLocalTransform": {"prim": CUBE},
     "omni.graph.nodes.WritePrimLocalTransform": {"prim": CUBE},
     "omni.graph.nodes.IsPrimActive": {"primTarget": CUBE},
+    "omni.graph.nodes.IsPrimSelected": {"prim": CUBE},
     "omni.graph.action.SetPrimActive": {"primTarget": CUBE},
     "omni.graph.action.OnObjectChange": {"prim": CUBE, "name": "physics:mass"},
     "isaacsim.core.nodes.IsaacJointNameResolver": {"robotPath": UR10, "jointNames": ["elbow_joint"]},
