@@ -23,7 +23,6 @@ VARIANTS = ("reads or switches USD variant selections; graphflow composes the st
             "selections the file authors")
 TIMELINE = ("drives Kit's playback timeline (play, stop, loop, seek); a graphflow run's clock is the simulation's "
             "and only moves forward")
-SETTINGS = "reads or writes Kit's settings registry, which a graphflow run does not have"
 MATERIALS = "reads or binds render materials, which only Kit's renderer uses"
 MANEUVER = ("animates a prim's xform ops over several ticks as an editor animation; graphflow's bodies move by "
             "physics (WritePrimLocalTransform places a free body)")
@@ -104,7 +103,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ReadOmniGraphValue": GRAPH_VALUES, "ReadPrim": None, "ReadPrimAttribute": None,
         "ReadPrimAttributes": None, "ReadPrimBundle": None, "ReadPrimLocalTransform": None,
         "ReadPrimMaterial": MATERIALS, "ReadPrimRelationship": None, "ReadPrims": None, "ReadPrimsBundle": None,
-        "ReadPrimsV2": None, "ReadSetting": SETTINGS, "ReadTime": None, "RemoveAttribute": None,
+        "ReadPrimsV2": None, "ReadSetting": None, "ReadTime": None, "RemoveAttribute": None,
         "RenameAttribute": None, "ReplaceString": None, "ReplaceTargetName": None, "ReplaceTargets": None,
         "RotateToOrientation": MANEUVER, "RotateToTarget": MANEUVER, "RotateVector": None, "Round": None,
         "RpResourceExampleHydra": None, "ScaleToSize": MANEUVER, "SelectIf": None, "SelectTargetIf": None,
@@ -117,7 +116,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "TransformVector": None, "TranslateToLocation": MANEUVER, "TranslateToTarget": MANEUVER, "Transpose": None,
         "Trig": None, "WritePrim": None, "WritePrimAttribute": None, "WritePrimLocalTransform": None,
         "WritePrimMaterial": MATERIALS, "WritePrimRelationship": PRIM_EDIT, "WritePrims": None,
-        "WritePrimsV2": None, "WriteSetting": SETTINGS}),
+        "WritePrimsV2": None, "WriteSetting": None}),
     "isaacsim.core.nodes": _ids(_ISAAC_CORE, {
         "IsaacArticulationController": None, "IsaacArticulationState": None,
         "IsaacAttachHydraTexture": None, "IsaacComputeOdometry": None, "IsaacComputeTransformTree": None,
