@@ -26,7 +26,6 @@ TIMELINE = ("drives Kit's playback timeline (play, stop, loop, seek); a graphflo
 MATERIALS = "reads or binds render materials, which only Kit's renderer uses"
 MANEUVER = ("animates a prim's xform ops over several ticks as an editor animation; graphflow's bodies move by "
             "physics (WritePrimLocalTransform places a free body)")
-GRAPH_VALUES = "reads any node's attribute by path through Kit's runtime store; graphflow graphs read outputs through connections"
 NOISE = "Kit's reference pages do not state its noise function, so values would not match Kit's"
 
 _ISAAC_CORE = "isaacsim.core.nodes"
@@ -100,7 +99,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "MoveToTransform": MANEUVER, "Multiply": None, "Negate": None, "Noise": NOISE, "Normalize": None,
         "NthRoot": None, "RandomBoolean": None, "RandomGaussian": None, "RandomUnitQuaternion": None,
         "RandomUnitVector": None, "ReadGamepadState": None, "ReadKeyboardState": None, "ReadMouseState": None,
-        "ReadOmniGraphValue": GRAPH_VALUES, "ReadPrim": None, "ReadPrimAttribute": None,
+        "ReadOmniGraphValue": None, "ReadPrim": None, "ReadPrimAttribute": None,
         "ReadPrimAttributes": None, "ReadPrimBundle": None, "ReadPrimLocalTransform": None,
         "ReadPrimMaterial": MATERIALS, "ReadPrimRelationship": None, "ReadPrims": None, "ReadPrimsBundle": None,
         "ReadPrimsV2": None, "ReadSetting": None, "ReadTime": None, "RemoveAttribute": None,

@@ -30,6 +30,7 @@ from graphflow.registry import Registry, default_registry
 from graphflow.usd.bundle_ports import DYNAMIC_INPUTS, expand, input_sources
 from graphflow.usd.graph_parts import (
     INSTANCE_TOKEN,
+    NODE_PATH_READERS,
     PORT_CHANGES,
     bind_target,
     graph_prefixes,
@@ -180,6 +181,8 @@ def _import_one(stage, graph_prim, label: str, registry: Registry, skip_unknown:
             renames.update({(name, old): (f"{name}.{new}" if new else None) for old, new in changes.items()})
             version = node_type.spec.version
         inputs = _mapped_inputs(prim, node_type, label, warnings, problems, renames)
+        if node_type.spec.id in NODE_PATH_READERS and str(inputs.get("path", "")).startswith(graph_path + "/"):
+            inputs["path"] = inputs["path"][len(graph_path) + 1:]   # a node of this graph: by its name
         if legacy_gripper and any(prim.GetAttribute(pin).GetConnections() for pin in LEGACY_GRIPPER_COMMANDS):
             command, link = legacy_gripper_command_node(name, f"{label}: node '{name}'", warnings)
             nodes.append(command)
