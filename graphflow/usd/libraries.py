@@ -26,7 +26,9 @@ TIMELINE = ("drives Kit's playback timeline (play, stop, loop, seek); a graphflo
 MATERIALS = "reads or binds render materials, which only Kit's renderer uses"
 MANEUVER = ("animates a prim's xform ops over several ticks as an editor animation; graphflow's bodies move by "
             "physics (WritePrimLocalTransform places a free body)")
-NOISE = "Kit's reference pages do not state its noise function, so values would not match Kit's"
+NOISE = ("Kit's reference says only 'Perlin noise'; its C++ calls a private copy of pre-release Warp's noise() "
+         "(warp_noise.h, not published), and Warp's 2-4D gradients changed since (a random angle, then a "
+         "normalised unit-square sample), so values would not match Kit's")
 
 _ISAAC_CORE = "isaacsim.core.nodes"
 _ROS2 = "isaacsim.ros2.bridge"
