@@ -9,7 +9,7 @@ SPEC = NodeSpec(
     version=1,
     description=(
         "Tube t follows curve t (curveVertexStarts[t], curveVertexCounts[t] over curvePoints) and owns output "
-        "points tubePointStarts[t] .. tubePointStarts[t+1] (tubePointStarts has one more entry than there are "
+        "points tubePointStarts[t] up to tubePointStarts[t+1] (tubePointStarts has one more entry than there are "
         "tubes; its last is the output size): around curve point j a ring of cols points, column c at "
         "point_j + width_j/2 * (cos(2 pi c/cols) * out_j + sin(2 pi c/cols) * up_j). cols, width, up and out "
         "hold one value for every tube / curve point or a single value for all. A tube whose point range is "

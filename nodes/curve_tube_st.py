@@ -7,9 +7,9 @@ SPEC = NodeSpec(
     id="omni.graph.nodes.CurveTubeST",
     version=1,
     description=(
-        "Tube t follows curve t (curveVertexStarts / curveVertexCounts) and owns st values tubeSTStarts[t] .. "
-        "tubeSTStarts[t+1] and quads tubeQuadStarts[t] .. tubeQuadStarts[t+1] (both lists end with the total). "
-        "Around curve point j a ring of cols + 1 st values (the seam twice): s = c/cols for c = 0..cols, "
+        "Tube t follows curve t (curveVertexStarts / curveVertexCounts) and owns st values tubeSTStarts[t] up to "
+        "tubeSTStarts[t+1] and quads tubeQuadStarts[t] up to tubeQuadStarts[t+1] (both lists end with the total). "
+        "Around curve point j a ring of cols + 1 st values (the seam twice): s = c/cols for c = 0 to cols, "
         "t = t[j], times 1/(width * cols * sin(pi/cols)) with scaleTLikeS so t advances like s does on the "
         "surface (width: one value, one per tube, or one per curve point, where the curve's largest is used). "
         "Quad k of a tube, column c, ring r indexes st values (i, i + 1, i + cols + 2, i + cols + 1) with "

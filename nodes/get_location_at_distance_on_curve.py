@@ -13,7 +13,7 @@ SPEC = NodeSpec(
     ui_name="Get Locations At Distances On Curve",
     inputs=(
         Attribute("curve", "pointd[3][]", default=(), description="The curve's points (closed back to the first)"),
-        Attribute("distance", "double[]", default=(), description="Fractions of the curve's length, wrapped to 0..1"),
+        Attribute("distance", "double[]", default=(), description="Fractions of the curve's length, wrapped to [0, 1)"),
         Attribute("forwardAxis", "token", default="X", allowed_tokens=AXIS_TOKENS,
                   description="The axis the orientations turn onto the curve's direction"),
         Attribute("upAxis", "token", default="Y", allowed_tokens=AXIS_TOKENS,

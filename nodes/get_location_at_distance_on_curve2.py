@@ -19,7 +19,7 @@ SPEC = NodeSpec(
     ui_name="Get Locations At Distances On Curve",
     inputs=(
         Attribute("curve", "pointd[3][]", default=(), description="The curve's points (closed back to the first)"),
-        Attribute("distance", "double", default=0.0, description="Fraction of the curve's length, wrapped to 0..1"),
+        Attribute("distance", "double", default=0.0, description="Fraction of the curve's length, wrapped to [0, 1)"),
         Attribute("forwardAxis", "token", default="X", allowed_tokens=AXIS_TOKENS,
                   description="The axis the orientation turns onto the curve's direction"),
         Attribute("upAxis", "token", default="Y", allowed_tokens=AXIS_TOKENS,

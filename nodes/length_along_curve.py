@@ -10,7 +10,7 @@ SPEC = NodeSpec(
     description=(
         "outputs:length[p] = the polyline length from its curve's first point to point p (curves given by "
         "curveVertexStarts / curveVertexCounts over curvePoints, read pairwise); with normalize each curve's "
-        "lengths are divided by its total, so they run 0..1 (a zero-length curve is left unnormalised). The "
+        "lengths are divided by its total, so they run from 0 to 1 (a zero-length curve is left unnormalised). The "
         "output has one entry per point; points no curve covers stay 0. No curves give an empty array."),
     categories=("geometry:analysis",),
     ui_name="Length Along Curve",

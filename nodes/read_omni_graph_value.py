@@ -8,7 +8,7 @@ SPEC = NodeSpec(
     description=(
         "outputs:value = the attribute 'name' of what 'path' names. A node of this graph (graphflow import "
         "turns Kit's node path, /World/ActionGraph/add, into the node's name, add; a hand-written graph gives "
-        "the name): its attribute ('outputs:sum', 'inputs:a', 'state:...') as that node holds it now, i.e. as "
+        "the name): its attribute ('outputs:sum', 'inputs:a', 'state:count') as that node holds it now, i.e. as "
         "it last computed (a pure node nothing pulled yet holds its defaults), as Kit reads it from Fabric "
         "without computing it. Otherwise a prim path ('/World/Cube'): the prim's attribute as the world has it "
         "now (what ReadPrimAttribute reads). No such node, prim or attribute fails the run with a line naming "
