@@ -215,6 +215,10 @@ class FakeWorld:
     def body_poses(self, paths) -> list[Pose]:
         return [self.prim_pose(path) for path in paths]
 
+    def read_body_poses(self, paths):
+        poses = self.body_poses(paths)
+        return lambda: poses
+
     def prim_velocity(self, path: str) -> tuple[Vec3, Vec3]:
         self.prim_pose(path)
         return ZERO, ZERO
