@@ -4,7 +4,7 @@ import hashlib
 import pytest
 
 from graphflow.executor import GraphRuntimeError
-from graphflow.testing import NodeHarness
+from graphflow.testing import GraphHarness, NodeHarness
 from graphflow.testing.fake_world import FakeWorld
 from graphflow.usd.omnigraph import import_graph
 
@@ -69,3 +69,34 @@ def test_no_prim_is_selected_headless_and_a_missing_prim_fails():
         assert NodeHarness("omni.graph.nodes.IsPrimSelected", inputs, world=world).compute().outputs["isSelected"] is False
     with pytest.raises(GraphRuntimeError, match="/World/Robt"):
         NodeHarness("omni.graph.nodes.IsPrimSelected", {"primPath": "/World/Robt"}, world=world).compute()
+
+
+def test_each_instance_of_an_instanced_graph_gets_its_own_target_id(tmp_path):
+    stage = tmp_path / "instances.usda"
+    stage.write_text('''#usda 1.0
+def Xform "World"
+{
+    def Cube "A" (prepend apiSchemas = ["OmniGraphAPI"])
+    {
+        rel omniGraphs = </Graph>
+    }
+    def Cube "B" (prepend apiSchemas = ["OmniGraphAPI"])
+    {
+        rel omniGraphs = </Graph>
+    }
+}
+def OmniGraph "Graph"
+{
+    def OmniGraphNode "id"
+    {
+        token node:type = "omni.graph.nodes.GetGraphTargetId"
+        int node:typeVersion = 1
+    }
+}
+''')
+    document = import_graph(str(stage), output_path=str(tmp_path / "graph.json")).document
+    harness = GraphHarness(document)
+    for name in ("A_id", "B_id"):
+        harness.instance.compute_node(name)
+    expected = [int.from_bytes(hashlib.sha256(path).digest()[:8], "big") for path in (b"/World/A", b"/World/B")]
+    assert [harness.output(name, "targetId") for name in ("A_id", "B_id")] == expected
