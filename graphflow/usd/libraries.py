@@ -17,7 +17,6 @@ from graphflow.usd.node_mapping import RENDERING_NODES
 REAL_TIME_FACTOR = ("its one output is simulated time over wall-clock time, which differs from run to run and "
                     "machine to machine; graphflow traces are bit-identical for the same inputs and seed, so a "
                     "wall-clock reading is not carried into a graph")
-TEST_ONLY = "Isaac's internal test node"
 PRIM_EDIT = "changes the stage's prims while running, which graphflow's world does not do"
 VARIANTS = ("reads or switches USD variant selections; graphflow composes the stage once, at load, with the "
             "selections the file authors")
@@ -128,7 +127,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "IsaacReadFilePath": None, "IsaacReadSimulationTime": None, "IsaacReadSimulationTimeAnnotator": None,
         "IsaacReadSystemTime": None, "IsaacReadSystemTimeAnnotator": None, "IsaacReadTimes": None, "IsaacReadWorldPose": None,
         "IsaacRealTimeFactor": REAL_TIME_FACTOR, "IsaacSetCameraOnRenderProduct": None, "IsaacSetViewportResolution": None,
-        "IsaacSimulationGate": None, "IsaacTestNode": TEST_ONLY, "IsaacTimeSplitter": None,
+        "IsaacSimulationGate": None, "IsaacTestNode": None, "IsaacTimeSplitter": None,
         "OgnIsaacRunOneSimulationFrame": None, "OgnIsaacScaleToFromStageUnit": None, "OnPhysicsStep": None}),
     "isaacsim.ros2.bridge / isaacsim.ros2.nodes": _ids(_ROS2, {
         "OgnROS2ServiceClient": None, "OgnROS2ServiceServerRequest": None,
