@@ -3,6 +3,7 @@ import hashlib
 
 import pytest
 
+from graphflow.build import og
 from graphflow.executor import GraphRuntimeError
 from graphflow.testing import GraphHarness, NodeHarness
 from graphflow.testing.fake_world import FakeWorld
@@ -100,3 +101,23 @@ def OmniGraph "Graph"
         harness.instance.compute_node(name)
     expected = [int.from_bytes(hashlib.sha256(path).digest()[:8], "big") for path in (b"/World/A", b"/World/B")]
     assert [harness.output(name, "targetId") for name in ("A_id", "B_id")] == expected
+
+
+def test_a_husky_script_builds_its_joint_name_array_with_make_array():
+    """As a published Isaac 2022 script does: four ConstantTokens read from their inputs into MakeArray's a..d."""
+    keys = og.Controller.Keys
+    graph, *_ = og.Controller.edit("/MakeArrayHusky", {
+        keys.CREATE_NODES: [("tick", "omni.graph.action.OnTick"), ("names", "omni.graph.nodes.MakeArray"),
+                            ("text", "graphflow.FormatText"), ("show", "omni.graph.ui_nodes.PrintText")]
+        + [(f"token{i}", "omni.graph.nodes.ConstantToken") for i in range(1, 5)],
+        keys.SET_VALUES: [("token1.inputs:value", "front_left_wheel"), ("token2.inputs:value", "front_right_wheel"),
+                          ("token3.inputs:value", "rear_left_wheel"), ("token4.inputs:value", "rear_right_wheel"),
+                          ("names.inputs:arraySize", 4)],
+        keys.CONNECT: [("token1.inputs:value", "names.inputs:b"), ("token2.inputs:value", "names.inputs:a"),
+                       ("token3.inputs:value", "names.inputs:d"), ("token4.inputs:value", "names.inputs:c"),
+                       ("tick.outputs:tick", "show.inputs:execIn"), ("names.outputs:array", "text.inputs:value"),
+                       ("text.outputs:text", "show.inputs:text")]})
+    harness = GraphHarness(graph.document)
+    harness.run(1)
+    assert harness.output("names", "array") == ("front_right_wheel", "front_left_wheel", "rear_right_wheel",
+                                                "rear_left_wheel")
