@@ -12,7 +12,9 @@ SPEC = NodeSpec(
         "it last computed (a pure node nothing pulled yet holds its defaults), as Kit reads it from Fabric "
         "without computing it. Otherwise a prim path ('/World/Cube'): the prim's attribute as the world has it "
         "now (what ReadPrimAttribute reads). No such node, prim or attribute fails the run with a line naming "
-        "it. path is a string here (it may name a node, which a USD path type could not)."),
+        "it. path is a string here (it may name a node, which a USD path type could not); only an authored "
+        "path is turned into a node name on import, so a node path that arrives through a connection is read "
+        "as a prim path."),
     categories=("sceneGraph",),
     ui_name="Read OmniGraph Value",
     inputs=(
