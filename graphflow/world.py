@@ -264,6 +264,14 @@ class World(Protocol):
     def set_prim_active(self, prim_path: str, active: bool) -> None:
         """Take the prim's rigid bodies out of the simulation (False) or back in (True), at rest."""
 
+    # animation (MoveTo*, RotateTo*, TranslateTo*, ScaleToSize): prims placed over several ticks
+    def local_transform(self, prim_path: str) -> tuple[Vec3, tuple[float, float, float, float], Vec3]:
+        """(translation m, orientation (x, y, z, w), scale) of the prim in its parent prim's frame, as now."""
+    def set_local_transform(self, prim_path: str, translation: Vec3, orientation: tuple[float, float, float, float],
+                            scale: Vec3) -> None:
+        """Place the prim in its parent's frame: a free or kinematic body is teleported at rest, another
+        Xformable prim gets its xform ops for the run (the files are untouched, a reset undoes it)."""
+
 
 def on_nearest_ancestor(path: str, query: Callable[[str], ServiceT]) -> tuple[str, ServiceT]:
     """``(prim, query(prim))`` for *path* or, where the world refuses it, its nearest ancestor that it accepts.
@@ -323,3 +331,4 @@ class ClockWorld:
     raycast = raycast_batch = contacts = body_of = same_body = _no_physics
     apply_force = gravity_enabled = set_gravity_enabled = set_collision_between = _no_physics
     prim_active = set_prim_active = _no_physics
+    local_transform = set_local_transform = _no_physics

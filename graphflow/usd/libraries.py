@@ -20,11 +20,7 @@ REAL_TIME_FACTOR = ("its one output is simulated time over wall-clock time, whic
 PRIM_EDIT = "changes the stage's prims while running, which graphflow's world does not do"
 VARIANTS = ("reads or switches USD variant selections; graphflow composes the stage once, at load, with the "
             "selections the file authors")
-TIMELINE = ("drives Kit's playback timeline (play, stop, loop, seek); a graphflow run's clock is the simulation's "
-            "and only moves forward")
 MATERIALS = "reads or binds render materials, which only Kit's renderer uses"
-MANEUVER = ("animates a prim's xform ops over several ticks as an editor animation; graphflow's bodies move by "
-            "physics (WritePrimLocalTransform places a free body)")
 NOISE = ("Kit's reference says only 'Perlin noise'; its C++ calls a private copy of pre-release Warp's noise() "
          "(warp_noise.h, not published), and Warp's 2-4D gradients changed since (a random angle, then a "
          "normalised unit-square sample), so values would not match Kit's")
@@ -87,17 +83,17 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "GetPrimDirectionVector": None, "GetPrimLocalToWorldTransform": None, "GetPrimPath": None,
         "GetPrimPaths": None, "GetPrimRelationship": None, "GetPrims": None, "GetPrimsAtPath": None,
         "GetString": None, "GetStringLength": None, "GetTargets": None, "GetTargetsSize": None,
-        "GetTimeline": TIMELINE, "GetVariantNames": VARIANTS, "GetVariantSelection": VARIANTS,
+        "GetTimeline": None, "GetVariantNames": VARIANTS, "GetVariantSelection": VARIANTS,
         "GetVariantSetNames": VARIANTS, "GpuInteropCudaEntry": None, "GpuInteropRenderProductEntry": None,
         "GraphTarget": None, "HasAttribute": None, "HasVariantSet": VARIANTS, "Increment": None,
         "InsertAttribute": None, "InsertString": None, "InsertTargets": None, "Interpolator": None,
         "IsPrimActive": None, "IsPrimSelected": None, "IsZero": None, "JoinString": None,
-        "LengthAlongCurve": None, "LoopTimeline": TIMELINE, "Magnitude": None,
+        "LengthAlongCurve": None, "LoopTimeline": None, "Magnitude": None,
         "MakeArray": None,
         "MakeMatrix2": None, "MakeMatrix3": None, "MakeMatrix4": None, "MakeTransform": None,
         "MakeTransformLookAt": None, "MakeVector2": None, "MakeVector3": None, "MakeVector4": None,
-        "MatrixMultiply": None, "Maximum": None, "Minimum": None, "Modulo": None, "MoveToTarget": MANEUVER,
-        "MoveToTransform": MANEUVER, "Multiply": None, "Negate": None, "Noise": NOISE, "Normalize": None,
+        "MatrixMultiply": None, "Maximum": None, "Minimum": None, "Modulo": None, "MoveToTarget": None,
+        "MoveToTransform": None, "Multiply": None, "Negate": None, "Noise": NOISE, "Normalize": None,
         "NthRoot": None, "RandomBoolean": None, "RandomGaussian": None, "RandomUnitQuaternion": None,
         "RandomUnitVector": None, "ReadGamepadState": None, "ReadKeyboardState": None, "ReadMouseState": None,
         "ReadOmniGraphValue": None, "ReadPrim": None, "ReadPrimAttribute": None,
@@ -105,15 +101,15 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ReadPrimMaterial": MATERIALS, "ReadPrimRelationship": None, "ReadPrims": None, "ReadPrimsBundle": None,
         "ReadPrimsV2": None, "ReadSetting": None, "ReadTime": None, "RemoveAttribute": None,
         "RenameAttribute": None, "ReplaceString": None, "ReplaceTargetName": None, "ReplaceTargets": None,
-        "RotateToOrientation": MANEUVER, "RotateToTarget": MANEUVER, "RotateVector": None, "Round": None,
-        "RpResourceExampleHydra": None, "ScaleToSize": MANEUVER, "SelectIf": None, "SelectTargetIf": None,
+        "RotateToOrientation": None, "RotateToTarget": None, "RotateVector": None, "Round": None,
+        "RpResourceExampleHydra": None, "ScaleToSize": None, "SelectIf": None, "SelectTargetIf": None,
         "SetMatrix4Quaternion": None, "SetMatrix4Rotation": None, "SetMatrix4Scale": None,
-        "SetMatrix4Translation": None, "SetTarget": None, "SetTimeline": TIMELINE, "SetVariantSelection": VARIANTS,
-        "Sin": None, "SourceIndices": None, "StartsWith": None, "StartTimeline": TIMELINE,
-        "StopTimeline": TIMELINE, "Subtract": None, "Tan": None, "Timer": None, "ToBool": None, "ToDeg": None,
+        "SetMatrix4Translation": None, "SetTarget": None, "SetTimeline": None, "SetVariantSelection": VARIANTS,
+        "Sin": None, "SourceIndices": None, "StartsWith": None, "StartTimeline": None,
+        "StopTimeline": None, "Subtract": None, "Tan": None, "Timer": None, "ToBool": None, "ToDeg": None,
         "ToDouble": None, "ToFloat": None, "ToHalf": None, "ToInt": None, "ToInt64": None, "ToRad": None,
         "ToString": None, "ToTarget": None, "ToToken": None, "ToUchar": None, "ToUint": None, "ToUint64": None,
-        "TransformVector": None, "TranslateToLocation": MANEUVER, "TranslateToTarget": MANEUVER, "Transpose": None,
+        "TransformVector": None, "TranslateToLocation": None, "TranslateToTarget": None, "Transpose": None,
         "Trig": None, "WritePrim": None, "WritePrimAttribute": None, "WritePrimLocalTransform": None,
         "WritePrimMaterial": MATERIALS, "WritePrimRelationship": PRIM_EDIT, "WritePrims": None,
         "WritePrimsV2": None, "WriteSetting": None}),
