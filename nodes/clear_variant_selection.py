@@ -10,10 +10,9 @@ SPEC = NodeSpec(
     compatible_versions=(2,),
     description=(
         "When execIn fires: with setVariant, blocks the selection of the prim's variant set variantSetName "
-        "in this run's layer (no variant applies; Kit then falls back to the set's fallback variant, and on "
-        "a one-layer stage so does USD when one is configured); without it, removes the run-time values "
-        "SetVariantSelection or BlendVariants wrote for any variant of the set. Refused, naming the prim, "
-        "when it would change what is simulated."),
+        "in this run's layer (an empty selection: no variant of the set applies until the world resets); "
+        "without it (Kit's default), removes the run-time values SetVariantSelection or BlendVariants wrote "
+        "for any variant of the set. Refused, naming the prim, when it would change what is simulated."),
     categories=VARIANT_CATEGORIES,
     ui_name="Clear Variant Selection",
     inputs=(
