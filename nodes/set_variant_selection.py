@@ -49,6 +49,6 @@ def compute(db):
         on_world(db, db.world.set_variant_selection, prim, variant_set, variant)
     else:
         what = f"writing the values of variant {variant!r}"
-        on_world(db, db.world.write_stage_values, prim, {path: v.value for path, v in values.items()}, what)
+        on_world(db, db.world.write_stage_values, prim, values, what)
         write_bindings(db, on_world(db, db.world.variant_bindings, prim, variant_set, variant), what)
     db.outputs.execOut = ExecState.ENABLED

@@ -239,7 +239,8 @@ class StageEditing:
         """The attribute values *variant* authors under the prim, by attribute path (strongest layer's)."""
         chosen = self._stage_variant_set(prim_path, variant_set)
         if not chosen.HasAuthoredVariant(variant):
-            raise WorldError(f"{prim_path}: variant set {variant_set!r} has no variant {variant!r}")
+            raise WorldError(f"{prim_path}: variant set {variant_set!r} has no variant {variant!r} "
+                             f"(it has {', '.join(chosen.GetVariantNames()) or 'none'})")
         return variant_opinions(self._stage_prim(prim_path), variant_set, variant)[0]
 
     def variant_bindings(self, prim_path: str, variant_set: str, variant: str) -> dict[str, tuple[str, ...]]:
@@ -248,11 +249,23 @@ class StageEditing:
         return variant_opinions(self._stage_prim(prim_path), variant_set, variant)[1]
 
     def write_stage_values(self, prim_path: str, values: Mapping[str, Any], what: str = "writing values") -> None:
-        """Author attribute values (plain Python, by attribute path under the prim) as run-time opinions."""
-        attributes = [(self._stage_attribute(prim_path, path), value) for path, value in values.items()]
+        """Author attribute values (plain Python, by attribute path under the prim) as run-time opinions; a
+        ``VariantValue`` also creates its attribute, with its type, where the stage has none."""
+        from pxr import Sdf
+
+        stage = self._stage_prim(prim_path).GetStage()
+        created = {path: value.type_name for path, value in values.items()
+                   if isinstance(value, VariantValue) and not stage.GetAttributeAtPath(path)}
+        attributes = [(path, value.value if isinstance(value, VariantValue) else value) for path, value in values.items()]
+        for path in set(values) - set(created):
+            self._stage_attribute(prim_path, path)
 
         def change():
-            for attribute, value in attributes:
+            for path, value in attributes:
+                attribute = stage.GetAttributeAtPath(path)
+                if path in created:
+                    owner, name = path.rsplit(".", 1)
+                    attribute = stage.GetPrimAtPath(owner).CreateAttribute(name, Sdf.ValueTypeNames.Find(created[path]))
                 try:
                     attribute.Set(usd_value(attribute, value))
                 except Exception as error:      # pxr raises Tf errors of its own classes
@@ -261,8 +274,10 @@ class StageEditing:
         self._apply_stage_edit(prim_path, what, change)
 
     def clear_stage_values(self, prim_path: str, attribute_paths: Iterable[str], what: str = "clearing values") -> None:
-        """Remove the run-time opinions on these attributes (the file's values show again)."""
-        attributes = [self._stage_attribute(prim_path, path) for path in attribute_paths]
+        """Remove the run-time opinions on these attributes (the file's values show again); an attribute the
+        stage does not have holds none."""
+        stage = self._stage_prim(prim_path).GetStage()
+        attributes = [attribute for path in attribute_paths if (attribute := stage.GetAttributeAtPath(path))]
         self._apply_stage_edit(prim_path, what, lambda: [attribute.Clear() for attribute in attributes])
 
     def _stage_attribute(self, prim_path: str, attribute_path: str):
