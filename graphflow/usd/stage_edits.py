@@ -278,7 +278,12 @@ class StageEditing:
         stage does not have holds none."""
         stage = self._stage_prim(prim_path).GetStage()
         attributes = [attribute for path in attribute_paths if (attribute := stage.GetAttributeAtPath(path))]
-        self._apply_stage_edit(prim_path, what, lambda: [attribute.Clear() for attribute in attributes])
+
+        def change():
+            for attribute in attributes:
+                attribute.Clear()
+
+        self._apply_stage_edit(prim_path, what, change)
 
     def _stage_attribute(self, prim_path: str, attribute_path: str):
         attribute = self._stage_prim(prim_path).GetStage().GetAttributeAtPath(attribute_path)
