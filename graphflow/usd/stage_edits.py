@@ -139,7 +139,7 @@ class StageEdits:
     def edit(self, root: str, what: str, change: Callable[[], None]) -> None:
         """Run *change* with the edit layer as edit target; undo it and raise when the physics under *root*
         would change."""
-        from pxr import Sdf, Usd
+        from pxr import Sdf, Tf, Usd
 
         if self.layer is None:
             self.layer = Sdf.Layer.CreateAnonymous(EDIT_LAYER_TAG)
@@ -155,6 +155,10 @@ class StageEdits:
         except WorldError:
             self.layer.TransferContent(backup)
             raise
+        except Tf.ErrorException as error:            # USD refused the authoring (an instance proxy, a bad value)
+            self.layer.TransferContent(backup)
+            reason = str(error).strip().splitlines()[-1].split(" : ", 1)[-1].strip(" '")
+            raise WorldError(f"{root}: {what} was refused by USD: {reason}") from None
         change_found = first_change(before, physics_state(self.stage, root))
         if change_found is not None:
             self.layer.TransferContent(backup)

@@ -210,3 +210,26 @@ def test_the_fake_world_edits_its_stage_and_a_world_without_a_stage_refuses():
     assert world.relationship_targets(BOX, "custom:owner") == ("/World/Looks",)
     with pytest.raises(WorldError, match="names no stage"):
         ClockWorld().set_variant_selection(BOX, "look", "shiny")
+
+
+def test_an_edit_usd_refuses_is_one_line_naming_the_prim():
+    stage = Usd.Stage.CreateInMemory()
+    stage.GetRootLayer().ImportFromString('''#usda 1.0
+def Xform "Proto"
+{
+    def Cube "Part"
+    {
+    }
+}
+def Xform "Instance" (
+    instanceable = true
+    references = </Proto>
+)
+{
+}
+''')
+    world = FakeWorld(stage=stage)
+    with pytest.raises(WorldError, match=r"^/Instance/Part: setting relationship custom:r to \['/Proto'\] was refused "
+                                         r"by USD: Cannot create property spec at path </Instance/Part>; authoring to "
+                                         r"an instance proxy is not allowed.$"):
+        world.set_relationship_targets("/Instance/Part", "custom:r", ["/Proto"])
