@@ -74,7 +74,7 @@ def physics_state(stage, root: str) -> dict[str, str]:
         for path, desc in zip(paths, descs):
             for field in dir(desc):
                 if not field.startswith("_") and field != "isValid":
-                    state[f"{kind_name} {path} {field}"] = repr(getattr(desc, field))
+                    state[f"{kind_name} {path} {field}"] = described(getattr(desc, field))
     prim = stage.GetPrimAtPath(root)
     for each in Usd.PrimRange(prim, Usd.TraverseInstanceProxies()) if prim else ():
         for attribute in each.GetAuthoredAttributes():
@@ -84,6 +84,20 @@ def physics_state(stage, root: str) -> dict[str, str]:
             if relationship.GetName().startswith(PHYSICS_PREFIXES):
                 state[f"{relationship.GetPath()}"] = repr(relationship.GetTargets())
     return state
+
+
+def described(value, depth: int = 0) -> str:
+    """A parser value as text that compares by content: the parser's structs and vectors (joint drives,
+    limits) have no repr of their own, so they are spelled out field by field."""
+    text = repr(value)
+    if " object at 0x" not in text or depth > 4:
+        return text
+    try:
+        items = list(value)
+    except TypeError:
+        fields = [name for name in dir(value) if not name.startswith("_") and not callable(getattr(value, name))]
+        return "{" + ", ".join(f"{name}: {described(getattr(value, name), depth + 1)}" for name in fields) + "}"
+    return "[" + ", ".join(described(item, depth + 1) for item in items) + "]"
 
 
 def first_change(before: Mapping[str, str], after: Mapping[str, str]) -> str | None:

@@ -233,3 +233,14 @@ def Xform "Instance" (
                                          r"by USD: Cannot create property spec at path </Instance/Part>; authoring to "
                                          r"an instance proxy is not allowed.$"):
         world.set_relationship_targets("/Instance/Part", "custom:r", ["/Proto"])
+
+
+def test_on_the_packaged_ur10_cell_only_the_edit_that_touches_a_drive_is_refused():
+    """The parser's joint drives and limits compare by content: a custom edit at the root passes."""
+    joint = "/World/ur10/ee_link/attachment_joint"
+    with create_world("asset:ur10_pick_place.usda") as world:
+        world.set_relationship_targets("/World", "custom:tags", ["/World/ur10"])
+        assert world.relationship_targets("/World", "custom:tags") == ("/World/ur10",)
+        with pytest.raises(WorldError, match=rf"^{joint}: .*\({joint}.drive:transX:physics:stiffness would change "
+                                             "from 1000.0 to 5.0\\)"):
+            world.write_stage_values(joint, {f"{joint}.drive:transX:physics:stiffness": 5.0})
