@@ -23,7 +23,8 @@ SPEC = NodeSpec(
         Attribute("prim", "target", description="The prim to write the relationship to"),
         Attribute("usdWriteBack", "bool", default=True,
                   description="Kit: write to USD or keep the value in Fabric only (no effect: the stage is the one copy)"),
-        Attribute("value", "target", description="The target(s) to write to the relationship"),
+        Attribute("value", "target", optional=True,
+                  description="The target(s) to write to the relationship (none: the relationship targets nothing)"),
     ),
     outputs=(
         Attribute("execOut", "execution", description="Fires after the relationship was written"),
