@@ -46,15 +46,22 @@ def plain(value):
 
 
 def usd_value(attribute, value):
-    """*value* (plain Python) as the attribute's USD type."""
+    """*value* (plain Python) as the attribute's USD type (an array element by element)."""
+    type_name = attribute.GetTypeName()
+    if type_name.isArray:
+        element = type_name.scalarType
+        return type_name.type.pythonClass([_usd_scalar(element.type.pythonClass, item) for item in value])
+    return _usd_scalar(type_name.type.pythonClass, value)
+
+
+def _usd_scalar(python_type, value):
     from pxr import Gf
 
-    python_type = attribute.GetTypeName().type.pythonClass
     if python_type in (Gf.Quatd, Gf.Quatf, Gf.Quath):
         x, y, z, w = value
         return python_type(w, x, y, z)
     if python_type is not None and isinstance(value, tuple):
-        return python_type(*value) if not hasattr(python_type, "GetRow") else python_type(value)
+        return python_type(value) if hasattr(python_type, "GetRow") else python_type(*value)
     return value
 
 
@@ -277,6 +284,10 @@ class StageEditing:
         attributes = [(path, value.value if isinstance(value, VariantValue) else value) for path, value in values.items()]
         for path in set(values) - set(created):
             self._stage_attribute(prim_path, path)
+        for path in created:
+            if not stage.GetPrimAtPath(path.rsplit(".", 1)[0]):
+                raise WorldError(f"{prim_path}: {path} is on a prim this stage does not have now (a variant that "
+                                 "is not selected defines it): select the variant to bring the prim in")
 
         def change():
             for path, value in attributes:

@@ -119,6 +119,14 @@ def test_set_variant_selects_it_and_the_default_writes_its_values_instead(world)
     assert glow(world) == 0.5 and value(world, "custom:finish") == "matte"
 
 
+def test_written_values_keep_their_usd_types_arrays_and_quaternions_included(world):
+    outputs("SetVariantSelection", world, "execIn", prim=BOX, variantSetName="look", variantName="striped")
+    assert list(value(world, "primvars:displayColor")) == [Gf.Vec3f(1, 1, 1), Gf.Vec3f(0, 0, 0)]
+    outputs("SetVariantSelection", world, "execIn", prim=BOX, variantSetName="look", variantName="shiny")
+    assert value(world, "custom:spin") == Gf.Quatf(0, 0, 0, 1)             # (w, x, y, z) as the file writes it
+    assert world.stage.GetAttributeAtPath("/World/Box.custom:label").GetTypeName() == "string"
+
+
 def test_clear_with_set_variant_blocks_the_selection(world):
     outputs("ClearVariantSelection", world, "execIn", prim=BOX, variantSetName="look", setVariant=True)
     assert outputs("GetVariantSelection", world, prim=BOX, variantSetName="look")["variantName"] == ""

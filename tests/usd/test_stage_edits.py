@@ -244,3 +244,51 @@ def test_on_the_packaged_ur10_cell_only_the_edit_that_touches_a_drive_is_refused
         with pytest.raises(WorldError, match=rf"^{joint}: .*\({joint}.drive:transX:physics:stiffness would change "
                                              "from 1000.0 to 5.0\\)"):
             world.write_stage_values(joint, {f"{joint}.drive:transX:physics:stiffness": 5.0})
+
+
+def test_a_variant_set_a_reference_brings_is_read_at_the_referencing_path(tmp_path):
+    (tmp_path / "lamp.usda").write_text('''#usda 1.0
+(
+    defaultPrim = "Lamp"
+)
+def Xform "Lamp" (
+    variants = {
+        string power = "low"
+    }
+    prepend variantSets = "power"
+)
+{
+    variantSet "power" = {
+        "low" {
+            float custom:watts = 5
+        }
+        "high" {
+            def Xform "Bulb"
+            {
+                float custom:watts = 60
+            }
+        }
+    }
+}
+''')
+    (tmp_path / "room.usda").write_text('''#usda 1.0
+def Xform "Room"
+{
+    def "Lamp" (
+        prepend references = @./lamp.usda@
+    )
+    {
+    }
+}
+''')
+    world = FakeWorld(stage=Usd.Stage.Open(str(tmp_path / "room.usda")))
+    values = world.variant_values("/Room/Lamp", "power", "high")
+    assert values == {"/Room/Lamp/Bulb.custom:watts": ("float", 60.0)}
+    with pytest.raises(WorldError, match="/Room/Lamp/Bulb.custom:watts is on a prim this stage does not have now"):
+        world.write_stage_values("/Room/Lamp", values)      # the bulb exists only in 'high'
+    world.set_variant_selection("/Room/Lamp", "power", "high")
+    world.write_stage_values("/Room/Lamp", {"/Room/Lamp/Bulb.custom:watts": 75.0})
+    assert world.stage.GetAttributeAtPath("/Room/Lamp/Bulb.custom:watts").Get() == 75.0
+    world.reset()
+    assert not world.stage.GetPrimAtPath("/Room/Lamp/Bulb")
+    assert (tmp_path / "lamp.usda").read_text().count("60") == 1             # the referenced file is untouched
