@@ -209,6 +209,10 @@ class World(Protocol):
     def prim_pose(self, path: str) -> Pose: ...
     def body_poses(self, paths: Sequence[str]) -> list[Pose]:
         """``prim_pose`` of each rigid-body prim, in one query (a recorder samples many bodies every few ticks)."""
+    def read_body_poses(self, paths: Sequence[str]) -> Callable[[], list[Pose]]:
+        """``body_poses`` read now and returned when called; a world may defer the arithmetic to the call."""
+        poses = self.body_poses(paths)
+        return lambda: poses
     def prim_velocity(self, path: str) -> tuple[Vec3, Vec3]:
         """(linear m/s, angular rad/s) of the prim's origin, world frame."""
 

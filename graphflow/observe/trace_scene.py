@@ -83,16 +83,13 @@ class SceneSection:
 
     def capture(self, manager, samples: dict, flat: list) -> None:
         """Append what ``encode`` needs of this tick to *flat*, read now: compute counts, whether poses were
-        sampled and each sampled pose's seven numbers, the rays of closes that began (or None). *samples*: the
+        the sampled poses (read now, composed when encoded), the rays of closes that began (or None). *samples*: the
         tick's gripper samples (``graphflow.observe.trace.sample_grippers``), whose statuses say which began."""
         flat += self.instance.compute_counts
         if self.moving and self.instance.tick_count % self.pose_every == 0:
-            flat.append(True)
-            for position, orientation in self.world.body_poses(self.moving):
-                flat += position
-                flat += orientation
+            flat.append(self.world.read_body_poses(self.moving))   # composed when encoded
         else:
-            flat.append(False)
+            flat.append(None)
         flat.append(self._rays_on_close(manager, samples) if manager is not None else None)
 
     def encode(self, items: Iterator) -> dict:
@@ -104,10 +101,11 @@ class SceneSection:
         self._counts = counts
         if computed:
             record["computed"] = computed
-        if next(items):
+        sampled = next(items)
+        if sampled is not None:
             poses = {}
-            for path in self.moving:
-                pose = list(map(float, islice(items, 7)))
+            for path, (position, orientation) in zip(self.moving, sampled()):
+                pose = [*map(float, position), *map(float, orientation)]
                 if pose != self._poses.get(path):
                     poses[path] = self._poses[path] = pose
             if poses:

@@ -107,9 +107,15 @@ class SceneLookups:
 
         One ``getLinkStates`` call per multibody instead of a call per link, planned once per
         list of paths: a run report samples every moving body and link, and the per-call cost is
-        most of it. A body whose inertial pose is what it was at the previous call (at rest, a
-        fixed base) gets the pose composed then instead of composing it again.
+        most of it.
         """
+        return self.read_body_poses(paths)()
+
+    def read_body_poses(self, paths: Iterable[str]) -> Callable[[], list[Pose]]:
+        """``body_poses`` in two halves: the bodies' states are read now, their prim poses composed when the
+        result is called. A recorder captures on every sampled tick and encodes later, so the run pays only
+        the read. A body whose inertial pose is what it was at the previous composition (at rest, a fixed
+        base) gets the pose composed then instead of composing it again."""
         key = tuple(paths)
         plan = self._pose_plans.get(key)
         if plan is None:
@@ -121,13 +127,16 @@ class SceneLookups:
         for body_id, links, indices in link_groups:
             for index, state in zip(indices, self.client.getLinkStates(body_id, links, computeForwardKinematics=1)):
                 inertial[index] = (state[0], state[1])
-        poses = []
-        for index, pose in enumerate(inertial):
-            previous = last[index]
-            if previous is None or previous[0] != pose:
-                previous = last[index] = (pose, compose(pose, prim_in_inertial[index]))
-            poses.append(previous[1])
-        return poses
+
+        def composed() -> list[Pose]:
+            poses = []
+            for index, pose in enumerate(inertial):
+                previous = last[index]
+                if previous is None or previous[0] != pose:
+                    previous = last[index] = (pose, compose(pose, prim_in_inertial[index]))
+                poses.append(previous[1])
+            return poses
+        return composed
 
     def _pose_plan(self, paths: tuple[str, ...]) -> PosePlan:
         """(base index and body id pairs, (body id, links, indices) per multibody, each prim frame in its inertial
