@@ -195,6 +195,7 @@ class PyBulletWorld(SceneLookups, StageEditing):
             except pybullet.error:
                 pass
             shutil.rmtree(self._mesh_directory, ignore_errors=True)
+            self.discard_stage_edits()      # the stage may outlive the world (a sweep's, the preflight's)
 
     def __enter__(self) -> "PyBulletWorld":
         return self

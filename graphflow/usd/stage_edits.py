@@ -22,7 +22,7 @@ from typing import Any, Callable, Iterable, Mapping, NamedTuple
 
 from graphflow.world import WorldError
 
-PHYSICS_PREFIXES = ("physics:", "physx", "drive:", "limit:", "physxJoint", "isaac")
+PHYSICS_PREFIXES = ("physics:", "physx", "drive:", "limit:", "isaac")     # "isaac": surface grippers
 EDIT_LAYER_TAG = "graphflow-stage-edits"
 
 

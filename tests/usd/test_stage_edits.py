@@ -190,6 +190,13 @@ def test_a_new_world_on_a_stage_whose_session_layer_a_sweep_cleared_starts_from_
         assert second.get_attribute(BOX, "custom:glow") == 4.0
 
 
+def test_closing_a_world_drops_its_edits_from_a_stage_that_outlives_it(stage_file):
+    stage = Usd.Stage.Open(str(stage_file))
+    with create_world(stage) as world:
+        world.set_variant_selection(BOX, "look", "shiny")
+    assert stage.GetPrimAtPath(BOX).GetVariantSets().GetVariantSelection("look") == "plain"
+
+
 def test_a_stronger_session_layer_opinion_is_reported_not_silently_kept(stage_file):
     stage = Usd.Stage.Open(str(stage_file))
     with Usd.EditContext(stage, stage.GetSessionLayer()):             # a sweep override of the selection
