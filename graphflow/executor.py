@@ -184,6 +184,7 @@ class GraphInstance:
         self.compiled = compiled
         self.world = world if world is not None else ClockWorld(compiled.document.settings.get("timeStep", DEFAULT_TIME_STEP))
         self._compute_listeners: tuple[Callable, ...] = ()
+        self.pulse_log: list[tuple[int, str, Any]] | None = None
         self._log_listeners: tuple[Callable[[LogEvent], None], ...] = ()
         for listener in listeners:   # before reset(): a node's initialize() may log
             self.add_listener(listener)
@@ -196,9 +197,14 @@ class GraphInstance:
 
         ``on_compute(instance, node_name, fired, db)`` after every compute of this instance (*fired*: the
         exec outputs it left enabled); ``on_log(event)`` for every ``db.log`` line. A tick only pays for
-        ``on_compute`` while some listener has one.
+        ``on_compute`` while some listener has one. A listener with ``reads_pulses`` true turns on
+        ``pulse_log``: the exec outputs each compute of the tick fired, as (node index, output name, state)
+        in declared order, emptied as the next tick starts (read it in ``on_tick``); a trace needs no more
+        of a compute than that, and a list append costs less than a call.
         """
         on_compute, on_log = getattr(listener, "on_compute", None), getattr(listener, "on_log", None)
+        if getattr(listener, "reads_pulses", False) and self.pulse_log is None:
+            self.pulse_log = []
         if on_compute is not None:
             self._compute_listeners += (on_compute,)
         if on_log is not None:
@@ -286,6 +292,8 @@ class GraphInstance:
         self._tick_epoch = self._exec_epoch
         self._epoch_tick = self.tick_count
         self._computes_this_tick = 0
+        if self.pulse_log:
+            self.pulse_log.clear()
         entries, run_from, latent = self.compiled.plain_entries, self._run_from, self._latent
         latent_before = list(latent) if latent else ()
         for index in self.compiled.event_sources:
@@ -326,7 +334,7 @@ class GraphInstance:
         exec_input_names, exec_output_names = compiled.exec_input_names, compiled.exec_output_names
         push_plans, self_entries = compiled.push_plans, compiled.plain_entries
         last_exec_compute, compute_counts, latent = self._last_exec_compute, self.compute_counts, self._latent
-        compute_listeners = self._compute_listeners
+        compute_listeners, pulse_log = self._compute_listeners, self.pulse_log
         budget = compiled.step_budget
         count = self._computes_this_tick
         try:
@@ -362,10 +370,13 @@ class GraphInstance:
                     self._tell_compute(index)
                 # push: exec outputs last to first, so the first output's first target pops first
                 reentry_pushed = False
+                logged = len(pulse_log) if pulse_log is not None else 0
                 for name, targets in push_plans[index]:
                     state = outputs[name]
                     if state == _DISABLED:
                         continue
+                    if pulse_log is not None:
+                        pulse_log.append((index, name, state))
                     if state == _LATENT_PUSH:
                         latent[index] = None
                         continue
@@ -376,6 +387,8 @@ class GraphInstance:
                         reentry_pushed = True
                     for target in targets:
                         push(target)
+                if pulse_log is not None and len(pulse_log) - logged > 1:
+                    pulse_log[logged:] = reversed(pulse_log[logged:])   # in declared order
         finally:
             self._computes_this_tick = count
 

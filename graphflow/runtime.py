@@ -64,7 +64,8 @@ class Listener(Protocol):
     * ``on_tick(simulation, tick)``: after every ``step()``, once the world and every instance ticked
       (*tick* counts the steps since the simulation was made or reset);
     * ``on_compute(instance, node_name, fired, db)``: after every node compute of every instance
-      (*fired*: the exec outputs it left enabled). It is on the executor's hot path: only traces use it;
+      (*fired*: the exec outputs it left enabled). It is on the executor's hot path: only per-node
+      timing uses it (a trace reads the instance's ``pulse_log``, which ``reads_pulses = True`` turns on);
     * ``on_log(event)``: every ``db.log`` line of every instance, as it is logged;
     * ``on_end(simulation, result)``: once when ``run()`` ends; *result* is the ``RunResult``, or None
       when the run ended by an exception (a failing node, an interrupt), which then propagates.

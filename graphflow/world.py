@@ -338,7 +338,8 @@ class ClockWorld:
     def _no_physics(self, *_args, **_kwargs):
         raise WorldError("this graph names no stage, so there are no prims to read or write")
 
-    prim_pose = body_poses = read_body_poses = prim_velocity = joint_names = joint_positions = joint_velocities = _no_physics
+    prim_pose = body_poses = read_body_poses = prim_velocity = joint_names = joint_positions = _no_physics
+    joint_velocities = _no_physics
     joint_paths = joint_efforts = joint_dof_types = _no_physics
     set_joint_targets = get_attribute = set_attribute = read_prim = gravity = _no_physics
     raycast = raycast_batch = contacts = body_of = same_body = _no_physics

@@ -85,6 +85,51 @@ def test_fan_out_runs_in_connection_order_and_fan_in_fires_once_per_pulse():
     assert record == ["first", "join", "second", "join"]
 
 
+def test_pulse_log_lists_each_computes_fired_outputs_in_declared_order_and_empties_each_tick():
+    """What a trace reads instead of a call per compute: the same pulses on_compute reports, in the same order."""
+    record = []
+    registry = _recording_registry(record)
+
+    def fork_compute(db):   # fires both outputs in one compute: the push loop visits them last to first
+        db.outputs.left = ExecState.ENABLED
+        db.outputs.right = ExecState.ENABLED_AND_PUSH if db.state.first else ExecState.ENABLED
+        db.state.first = False
+
+    registry.register_module(_module("fork", NodeSpec(
+        id="test.Fork", version=1, description="Fires both outputs.",
+        inputs=(Attribute("execIn", "execution"),),
+        outputs=(Attribute("left", "execution"), Attribute("right", "execution")),
+        state=(Attribute("first", "bool", default=True),)), fork_compute))
+    document = _graph(
+        [{"name": "tick", "type": "omni.graph.action.OnTick"},
+         {"name": "fork", "type": "test.Fork"},
+         {"name": "a", "type": "test.Record", "inputs": {"label": "a"}},
+         {"name": "b", "type": "test.Record", "inputs": {"label": "b"}}],
+        [_conn("tick.outputs:tick", "fork.inputs:execIn"),
+         _conn("fork.outputs:left", "a.inputs:execIn"), _conn("fork.outputs:right", "b.inputs:execIn")],
+        registry)
+    reported = []
+
+    class Listener:
+        reads_pulses = True
+
+        def on_compute(self, instance, node_name, fired, db):
+            reported.extend((node_name, name, getattr(db.outputs, name)) for name in fired)
+
+    instance = GraphInstance(compile(document, registry), listeners=[Listener()])
+    names = [node.name for node in instance.compiled.nodes]
+    ticks = []
+    for _tick in range(2):
+        reported.clear()
+        instance.tick()
+        assert [(names[index], name, state) for index, name, state in instance.pulse_log] == reported
+        ticks.append([f"{node}.{name}" for node, name, _state in reported])
+    # tick 1: right re-enters fork (ENABLED_AND_PUSH) after b, and fork fires both again; tick 2 starts empty
+    assert ticks[0] == ["tick.tick", "fork.left", "fork.right", "a.execOut", "b.execOut",
+                        "fork.left", "fork.right", "a.execOut", "b.execOut"]
+    assert ticks[1] == ["tick.tick", "fork.left", "fork.right", "a.execOut", "b.execOut"]
+
+
 def test_diamond_pulls_its_top_once_per_tick():
     record = []
     registry = _recording_registry(record)

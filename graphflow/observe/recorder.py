@@ -37,8 +37,8 @@ class TraceRecorder:
     """Writes the trace of a simulation's first graph instance to a text stream: a header, then a line per tick.
 
     ``TraceRecorder(simulation, stream)`` writes the header and adds itself to the simulation's
-    listeners: it collects exec pulses as nodes compute (``on_compute``) and captures each tick after
-    it ran (``on_tick``). The stream stays open: whoever opened it closes it. *records*, a list, also
+    listeners: it captures each tick after it ran (``on_tick``), with the exec pulses the instance
+    logged for it (``reads_pulses``). The stream stays open: whoever opened it closes it. *records*, a list, also
     keeps every record as a dict (the run report reads them so, without encoding JSON). *deferred*
     (only without a stream): ticks are encoded into *records* only when ``flush()`` asks.
     """
@@ -52,13 +52,13 @@ class TraceRecorder:
         self.records = records
         self.deferred = deferred and stream is None
         self.instance = simulation.instance
-        self._pulses: list[str] = []
-        self._pulse_names: dict[tuple, str] = {}   # (node, exec output, state) -> its pulse text
+        self._pulse_names: dict[tuple, str] = {}   # (node index, exec output, state) -> its pulse text
         self._captured: list = []                  # ticks captured but not yet encoded, flat (see _capture)
         self._pending = 0                          # how many ticks _captured holds
         self._grippers: dict[str, Any] = {}        # each gripper's sample as last encoded
         self._manager = None                       # the world's gripper manager, once a node has made it
         nodes = self.instance.compiled.nodes
+        self._node_names = [node.name for node in nodes]
         databases = [self.instance.database(node.name) for node in nodes]
         exec_names = [frozenset(a.name for a in node.spec.exec_outputs) for node in nodes]
         slots = [(database.outputs.__dict__, name, f"{node.name}.{name}")
@@ -77,16 +77,13 @@ class TraceRecorder:
         self._write_header(graph, list(randomized))
         simulation.add_listener(self)
 
-    def on_compute(self, instance, node_name: str, fired: list[str], db) -> None:
-        if instance is not self.instance or not fired:
-            return
-        outputs, names = db.outputs.__dict__, self._pulse_names
-        for name in fired:
-            key = (node_name, name, outputs[name])
-            text = names.get(key)
-            if text is None:
-                text = names[key] = f"{node_name}.{name}{_STATE_SUFFIX[ExecState(outputs[name])]}"
-            self._pulses.append(text)
+    reads_pulses = True   # the instance logs each tick's exec pulses for _capture (GraphInstance.pulse_log)
+
+    def _pulse_text(self, pulse: tuple) -> str:
+        """``node.output`` with the state's suffix (``:push``, ...), made once per (node, output, state)."""
+        index, name, state = pulse
+        text = self._pulse_names[pulse] = f"{self._node_names[index]}.{name}{_STATE_SUFFIX[ExecState(state)]}"
+        return text
 
     def on_tick(self, simulation, tick: int) -> None:
         """Capture the tick that just ran; write its record now when there is a stream."""
@@ -109,9 +106,11 @@ class TraceRecorder:
         garbage collector does not track floats and strings, so a long run's captures do not make its
         collections more frequent or slower."""
         instance, world, flat = self.instance, self.simulation.world, self._captured
-        flat += (instance.tick_count, world.time, len(self._pulses))
-        flat += self._pulses
-        self._pulses.clear()
+        pulses = instance.pulse_log or ()
+        flat += (instance.tick_count, world.time, len(pulses))
+        if pulses:
+            texts, text_of = self._pulse_names, self._pulse_text
+            flat += [texts.get(pulse) or text_of(pulse) for pulse in pulses]
         values = [outputs[name] for outputs, name in self._sources]
         immutable = self._immutable
         for index in compress(self._slot_indices, map(is_not, values, immutable)):   # a new object in the slot

@@ -110,9 +110,10 @@ def sample_grippers(world, manager=None) -> dict[str, GripperSample]:
     if manager is None:
         return {}
     samples = {}
-    for path in sorted(getattr(manager, "components", {})):
-        component = manager.component(path)
-        gripped = tuple(component.gripped_objects())
+    components = getattr(manager, "components", {})
+    for path in sorted(components):
+        component = components[path]
+        gripped = tuple(component.gripped_objects()) if component.handles else ()
         samples[path] = GripperSample(
             status=component.status.token,
             gripped=gripped,

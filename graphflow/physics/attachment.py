@@ -64,6 +64,8 @@ from graphflow.poses import (
     compose,
     invert,
     quat_matrix,
+    quat_multiply,
+    quat_normalize,
     quat_rotate,
     relative,
 )
@@ -128,6 +130,16 @@ class PyBulletAttachments:
             state = self.bullet.getLinkState(body, link, computeForwardKinematics=1)
             position, orientation = state[0], state[1]
         return tuple(position), tuple(orientation)
+
+    def _hold_frame_rotation(self, hold) -> Quat:
+        """The hold's joint frame orientation on the gripper, world axes: ``compose(com_pose, parent_frame)``'s
+        rotation, the same numbers without the translation (the force readers ask for it every tick)."""
+        body, link = hold.gripper
+        if link < 0:
+            orientation = self.bullet.getBasePositionAndOrientation(body)[1]
+        else:
+            orientation = self.bullet.getLinkState(body, link, computeForwardKinematics=1)[1]
+        return quat_normalize(quat_multiply(orientation, hold.parent_frame[1]))
 
     def _com_motion(self, body: int, link: int):
         """(centre-of-mass pose, linear velocity, angular velocity): one PyBullet call for a link."""
@@ -207,7 +219,7 @@ class PyBulletAttachments:
             if axis.rigid:
                 continue
             if frame_rotation is None:
-                frame_rotation = compose(self.com_pose(*hold.gripper), hold.parent_frame)[1]
+                frame_rotation = self._hold_frame_rotation(hold)
             direction = quat_rotate(frame_rotation, AXIS_VECTORS["XYZ"[index]])
             along = _dot(force, direction)
             # a limit only pushes back: at the lower stop it pulls the gripper towards -axis, at the upper towards +axis
@@ -223,7 +235,7 @@ class PyBulletAttachments:
         """This point's share of the hold's torque on the gripper about the joint origin, world axes, N·m."""
         hold = self._holds[self._hold_of[handle]]
         state = self.bullet.getConstraintState(hold.constraint)
-        rotation = compose(self.com_pose(*hold.gripper), hold.parent_frame)[1]
+        rotation = self._hold_frame_rotation(hold)
         torque = quat_rotate(rotation, (state[3], state[4], state[5]))
         share = 1.0 / len(hold.members)
         return torque[0] * share, torque[1] * share, torque[2] * share

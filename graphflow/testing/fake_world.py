@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Callable, Hashable, Mapping, Sequence
+from typing import Any, Hashable, Mapping, Sequence
 
 from graphflow.bundles import Bundle, BundleAttribute, type_of_value
 from graphflow.poses import IDENTITY_QUAT, Pose, Vec3, as_vec3, compose, pose_matrix
@@ -217,7 +217,7 @@ class FakeWorld(StageEditing):
     def body_poses(self, paths) -> list[Pose]:
         return [self.prim_pose(path) for path in paths]
 
-    def read_body_poses(self, paths) -> Callable[[], list[Pose]]:
+    def read_body_poses(self, paths):
         poses = self.body_poses(paths)
         return lambda: poses
 
