@@ -178,3 +178,53 @@ def test_a_physics_variant_switch_fails_the_run_naming_the_node_the_prim_and_why
     with pytest.raises(GraphRuntimeError, match="variant set 'size' has no variant 'huge' \\(it has big, small\\)"):
         outputs("SetVariantSelection", world, "execIn", prim=BOX, variantSetName="size", variantName="huge",
                 setVariant=True)
+
+
+def test_kits_tutorial_blend_turns_the_torus_halfway_and_its_pose_follows():
+    """Kit's "Using Variant Nodes" tutorial: a torus with variant set Blend, rotateXYZ (90, 0, 0) in A and
+    (0, 0, 90) in B. Blending at 0.5 gives (45, 0, 45): X first, then Z, so the world orientation is
+    qz(45) qx(45) = (c s, s^2, s c, c^2) with s = sin 22.5 deg, c = cos 22.5 deg (x, y, z, w)."""
+    import math
+
+    from graphflow.physics import create_world
+
+    stage = Usd.Stage.CreateInMemory()
+    stage.GetRootLayer().ImportFromString('''#usda 1.0
+(
+    upAxis = "Z"
+    metersPerUnit = 1
+)
+def Xform "World"
+{
+    def Xform "Torus" (
+        variants = {
+            string Blend = "A"
+        }
+        prepend variantSets = "Blend"
+    )
+    {
+        uniform token[] xformOpOrder = ["xformOp:rotateXYZ"]
+        variantSet "Blend" = {
+            "A" {
+                float3 xformOp:rotateXYZ = (90, 0, 0)
+            }
+            "B" {
+                float3 xformOp:rotateXYZ = (0, 0, 90)
+            }
+        }
+    }
+}
+''')
+    with create_world(stage) as world:
+        assert world.prim_pose("/World/Torus")[1] == pytest.approx((math.sqrt(0.5), 0.0, 0.0, math.sqrt(0.5)))
+        outputs("BlendVariants", world, "execIn", prim=["/World/Torus"], variantSetName="Blend", variantNameA="A",
+                variantNameB="B", blend=0.5)
+        assert value_at(world, "/World/Torus.xformOp:rotateXYZ") == (45.0, 0.0, 45.0)
+        s, c = math.sin(math.radians(22.5)), math.cos(math.radians(22.5))
+        assert world.prim_pose("/World/Torus")[1] == pytest.approx((c * s, s * s, s * c, c * c), abs=1e-6)
+        world.reset()
+        assert world.prim_pose("/World/Torus")[1] == pytest.approx((math.sqrt(0.5), 0.0, 0.0, math.sqrt(0.5)))
+
+
+def value_at(world, path):
+    return tuple(world.stage.GetAttributeAtPath(path).Get())
