@@ -54,8 +54,12 @@ def on_world(db: NodeDb, call: Callable[..., Any], *args) -> Any:
         db.error(str(error))
 
 
-def write_bindings(db: NodeDb, bindings: dict[str, tuple[str, ...]], what: str) -> None:
-    """Author the material bindings a variant makes (targets by relationship path) as run-time opinions."""
+def write_bindings(db: NodeDb, bindings: dict[str, tuple[str, ...]]) -> None:
+    """Author the material bindings a variant makes (targets by relationship path) as run-time opinions: a
+    purpose-less one binds through UsdShade (which applies MaterialBindingAPI), others set their targets."""
     for relationship_path, targets in bindings.items():
         owner, name = relationship_path.rsplit(".", 1)
-        on_world(db, db.world.set_relationship_targets, owner, name, targets)
+        if name == "material:binding" and len(targets) == 1:
+            on_world(db, db.world.bind_material, owner, targets[0])
+        else:
+            on_world(db, db.world.set_relationship_targets, owner, name, targets)

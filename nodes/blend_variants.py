@@ -82,7 +82,7 @@ def compute(db):
     else:
         on_world(db, db.world.write_stage_values, prim, values, f"blending {name_a!r} and {name_b!r} at {t:g}")
     chosen = name_a if t < 0.5 else name_b
-    write_bindings(db, on_world(db, db.world.variant_bindings, prim, variant_set, chosen), f"binding {chosen!r}")
+    write_bindings(db, on_world(db, db.world.variant_bindings, prim, variant_set, chosen))
     attributes = []
     for path, value in values.items():
         type_name = type_of_value(value)

@@ -50,5 +50,5 @@ def compute(db):
     else:
         what = f"writing the values of variant {variant!r}"
         on_world(db, db.world.write_stage_values, prim, values, what)
-        write_bindings(db, on_world(db, db.world.variant_bindings, prim, variant_set, variant), what)
+        write_bindings(db, on_world(db, db.world.variant_bindings, prim, variant_set, variant))
     db.outputs.execOut = ExecState.ENABLED

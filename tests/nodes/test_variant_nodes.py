@@ -20,6 +20,12 @@ STAGE = '''#usda 1.0
 )
 def Xform "World"
 {
+    def Material "Red"
+    {
+    }
+    def Material "Chrome"
+    {
+    }
     def Cube "Box" (
         prepend apiSchemas = ["PhysicsRigidBodyAPI", "PhysicsCollisionAPI"]
         variants = {
@@ -32,6 +38,7 @@ def Xform "World"
         float custom:glow = 0.5
         variantSet "look" = {
             "plain" {
+                rel material:binding = </World/Red>
                 float custom:glow = 0
                 token custom:finish = "matte"
                 int custom:coats = 1
@@ -39,6 +46,7 @@ def Xform "World"
                 quatf custom:spin = (1, 0, 0, 0)
             }
             "shiny" {
+                rel material:binding = </World/Chrome>
                 float custom:glow = 4
                 token custom:finish = "gloss"
                 int custom:coats = 3
@@ -114,6 +122,7 @@ def test_set_variant_selects_it_and_the_default_writes_its_values_instead(world)
     outputs("SetVariantSelection", world, "execIn", prim=BOX, variantSetName="look", variantName="shiny")
     assert glow(world) == 4.0 and value(world, "custom:label") == "new"
     assert outputs("GetVariantSelection", world, prim=BOX, variantSetName="look")["variantName"] == "plain"
+    assert outputs("ReadPrimMaterial", world, prim=BOX)["material"] == "/World/Chrome"    # its binding too
     # ClearVariantSelection without setVariant removes the written values: the file's show again
     outputs("ClearVariantSelection", world, "execIn", prim=BOX, variantSetName="look")
     assert glow(world) == 0.5 and value(world, "custom:finish") == "matte"
@@ -151,6 +160,7 @@ def test_blend_writes_the_weighted_values_and_switches_discrete_ones_at_one_half
     assert value(world, "custom:spin") == Gf.Quatf(0.75, 0.0, 0.0, 0.25)
     blend(0.5)
     assert value(world, "custom:finish") == "gloss" and glow(world) == 2.0
+    assert outputs("ReadPrimMaterial", world, prim=BOX)["material"] == "/World/Chrome"    # b's binding from 0.5
     assert value(world, "custom:coats") == 3
     assert value(world, "custom:label") is None            # only b authors it: not blended
     blend(1.0, setVariant=True)          # finished: b is selected and the written values are removed
