@@ -286,6 +286,14 @@ class World(Protocol):
         """The material bound directly for all purposes, '' when none."""
     def bind_material(self, prim_path: str, material_path: str) -> None: ...
 
+    # animation (MoveTo*, RotateTo*, TranslateTo*, ScaleToSize): prims placed over several ticks
+    def local_transform(self, prim_path: str) -> tuple[Vec3, tuple[float, float, float, float], Vec3]:
+        """(translation m, orientation (x, y, z, w), scale) of the prim in its parent prim's frame, as now."""
+    def set_local_transform(self, prim_path: str, translation: Vec3, orientation: tuple[float, float, float, float],
+                            scale: Vec3) -> None:
+        """Place the prim in its parent's frame: a free or kinematic body is teleported at rest, another
+        Xformable prim gets its xform ops for the run (the files are untouched, a reset undoes it)."""
+
 
 def on_nearest_ancestor(path: str, query: Callable[[str], ServiceT]) -> tuple[str, ServiceT]:
     """``(prim, query(prim))`` for *path* or, where the world refuses it, its nearest ancestor that it accepts.
@@ -348,3 +356,4 @@ class ClockWorld:
     variant_sets = variant_names = variant_selection = set_variant_selection = variant_values = _no_physics
     variant_bindings = write_stage_values = clear_stage_values = _no_physics
     relationship_targets = set_relationship_targets = bound_material = bind_material = _no_physics
+    local_transform = set_local_transform = _no_physics

@@ -12,7 +12,7 @@ maxAngularSpeed; wheel speeds over maxWheelSpeed scale down together.
 """
 import math
 
-from graphflow.poses import quat_from_axis_angle, quat_rotate
+from graphflow.poses import quat_from_axis_angle, quat_normalize, quat_rotate
 from graphflow.spec import Attribute, NodeSpec
 from graphflow.types import ExecState
 
@@ -102,7 +102,7 @@ def _constraints(inputs, positions, radii, angles):
     rows = ([], [], [])
     for position, orientation, radius, angle in zip(positions, inputs.wheelOrientations, radii, angles):
         w, x, y, z = orientation
-        axis = quat_rotate((x, y, z, w), inputs.wheelAxis)
+        axis = quat_rotate(quat_normalize((x, y, z, w)), inputs.wheelAxis)   # Isaac normalises it too
         axis = _unit(quat_rotate(quat_from_axis_angle(up, math.radians(angle)), axis))
         dx, dy = axis[0] * radius, axis[1] * radius
         rows[0].append(dx)

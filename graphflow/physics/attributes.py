@@ -108,6 +108,8 @@ def _free_body(world, prim_path: str, name: str):
 
 
 def _get_local_pose(world, prim_path, name):
+    if prim_path not in world.scene.bodies:     # not simulated: as composed (an animation may have moved it)
+        return _get_usd_attribute(world, prim_path, name)
     handle = _body(world, prim_path, name)
     local = relative(world._parent_pose(prim_path), world._body_pose(handle))
     return local[0] if name == "xformOp:translate" else local[1]

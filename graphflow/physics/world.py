@@ -17,7 +17,7 @@ from typing import Sequence
 import pybullet
 from pybullet_utils.bullet_client import BulletClient
 
-from graphflow.physics import attributes
+from graphflow.physics import animation, attributes
 from graphflow.physics.activity import PrimActivity
 from graphflow.physics.attachment import WorldAttachments
 from graphflow.physics.builder import SceneBuilder
@@ -32,6 +32,7 @@ from graphflow.physics.health import NonFiniteState, first_non_finite, health_pl
 from graphflow.physics.lookups import SceneLookups
 from graphflow.physics.native_output import native_stdout_silenced
 from graphflow.poses import compose
+from graphflow.usd.animation_layer import AnimationLayer
 from graphflow.usd.description import StageDescription
 from graphflow.usd.errors import warn_unsupported
 from graphflow.usd.prim_bundle import PrimReader
@@ -95,6 +96,7 @@ class PyBulletWorld(SceneLookups, StageEditing):
         self._mesh_directory = tempfile.mkdtemp(prefix="graphflow-meshes-")
         self.services = Services()
         self.prim_reader = PrimReader()     # what USD composed for each prim read into a bundle, kept for the run
+        self.animation_layer = AnimationLayer(stage)    # xform ops the animation nodes write (cleared on reset)
         self.attachments = WorldAttachments(self)
         self.unsupported: list[tuple[str, str]] = list(description.unsupported)
         self._closed = False
@@ -155,6 +157,8 @@ class PyBulletWorld(SceneLookups, StageEditing):
     def reset(self) -> None:
         """Rebuild from the parsed stage (bit-exact initial state), then reset attachments and services."""
         self.discard_stage_edits()
+        for path in self.animation_layer.clear():
+            self.prim_reader.forget(path)
         self._build()
         self.attachments.reset()
         self.time = 0.0
@@ -190,6 +194,7 @@ class PyBulletWorld(SceneLookups, StageEditing):
     def close(self) -> None:
         if not self._closed:
             self._closed = True
+            self.animation_layer.close()
             try:
                 self.client.disconnect()
             except pybullet.error:
@@ -401,6 +406,13 @@ class PyBulletWorld(SceneLookups, StageEditing):
     def stage_edited(self) -> None:
         self.prim_reader = PrimReader()
         self._offsets = {}
+
+    # -- animation (MoveTo*, RotateTo*, TranslateTo*, ScaleToSize): prims placed over ticks ------------------
+    def local_transform(self, prim_path: str):
+        return animation.local_transform(self, prim_path)
+
+    def set_local_transform(self, prim_path: str, translation, orientation, scale) -> None:
+        animation.set_local_transform(self, prim_path, translation, orientation, scale)
 
 
 __all__ = ["PyBulletWorld", "RayHit", "Contact", "ATTRIBUTES"]

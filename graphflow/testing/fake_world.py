@@ -135,6 +135,7 @@ class FakeWorld(StageEditing):
         self.applied_forces: list[tuple[str, Vec3, Vec3 | None]] = []
         self.no_collision: set[frozenset[str]] = set()
         self.inactive: set[str] = set()                     # prims SetPrimActive switched off (the boxes stay)
+        self.scales: dict[str, Vec3] = {}                   # box -> scale an animation set (local_transform)
         self._pending_forces: list[tuple[str, Vec3, Vec3 | None]] = []
 
     # -- building the scene --
@@ -376,6 +377,19 @@ class FakeWorld(StageEditing):
     def set_prim_active(self, prim_path: str, active: bool) -> None:
         self.prim_active(prim_path)
         (self.inactive.discard if active else self.inactive.add)(prim_path)
+
+    # -- animation (MoveTo*, RotateTo*, TranslateTo*, ScaleToSize): boxes placed in the world frame --
+
+    def local_transform(self, prim_path: str):
+        box = self._box(prim_path)
+        return box.center, box.orientation, self.scales.get(prim_path, (1.0, 1.0, 1.0))
+
+    def set_local_transform(self, prim_path: str, translation, orientation, scale) -> None:
+        """A box moves and turns at once; its scale is recorded (``scales``), its size stays."""
+        box = self._box(prim_path)
+        x, y, z, w = (float(c) for c in orientation)
+        box.center, box.orientation = as_vec3(translation), (x, y, z, w)
+        self.scales[prim_path] = as_vec3(scale)
 
 
 def _ray_box(origin: Vec3, unit: Vec3, length: float, box: Box) -> RayHit | None:

@@ -17,15 +17,10 @@ from graphflow.usd.node_mapping import RENDERING_NODES
 REAL_TIME_FACTOR = ("its one output is simulated time over wall-clock time, which differs from run to run and "
                     "machine to machine; graphflow traces are bit-identical for the same inputs and seed, so a "
                     "wall-clock reading is not carried into a graph")
-TEST_ONLY = "Isaac's internal test node"
 GRAPH_TARGETS = "a numeric id of the graph target (Kit's internal prim handle); GraphTarget gives its path"
 GEOMETRY = "builds curve or tube geometry for display, which graphflow's world neither renders nor simulates"
-TIMELINE = ("drives Kit's playback timeline (play, stop, loop, seek); a graphflow run's clock is the simulation's "
-            "and only moves forward")
 SETTINGS = "reads or writes Kit's settings registry, which a graphflow run does not have"
 SELECTION = "reads the editor's prim selection (no editor headless)"
-MANEUVER = ("animates a prim's xform ops over several ticks as an editor animation; graphflow's bodies move by "
-            "physics (WritePrimLocalTransform places a free body)")
 GRAPH_VALUES = "reads any node's attribute by path through Kit's runtime store; graphflow graphs read outputs through connections"
 NOISE = "Kit's reference pages do not state its noise function, so values would not match Kit's"
 
@@ -87,17 +82,17 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "GetPrimDirectionVector": None, "GetPrimLocalToWorldTransform": None, "GetPrimPath": None,
         "GetPrimPaths": None, "GetPrimRelationship": None, "GetPrims": None, "GetPrimsAtPath": None,
         "GetString": None, "GetStringLength": None, "GetTargets": None, "GetTargetsSize": None,
-        "GetTimeline": TIMELINE, "GetVariantNames": None, "GetVariantSelection": None,
+        "GetTimeline": None, "GetVariantNames": None, "GetVariantSelection": None,
         "GetVariantSetNames": None, "GpuInteropCudaEntry": None, "GpuInteropRenderProductEntry": None,
         "GraphTarget": None, "HasAttribute": None, "HasVariantSet": None, "Increment": None,
         "InsertAttribute": None, "InsertString": None, "InsertTargets": None, "Interpolator": None,
         "IsPrimActive": None, "IsPrimSelected": SELECTION, "IsZero": None, "JoinString": None,
-        "LengthAlongCurve": GEOMETRY, "LoopTimeline": TIMELINE, "Magnitude": None,
+        "LengthAlongCurve": GEOMETRY, "LoopTimeline": None, "Magnitude": None,
         "MakeArray": "Kit's older Python array maker, replaced by ConstructArray; not carried over",
         "MakeMatrix2": None, "MakeMatrix3": None, "MakeMatrix4": None, "MakeTransform": None,
         "MakeTransformLookAt": None, "MakeVector2": None, "MakeVector3": None, "MakeVector4": None,
-        "MatrixMultiply": None, "Maximum": None, "Minimum": None, "Modulo": None, "MoveToTarget": MANEUVER,
-        "MoveToTransform": MANEUVER, "Multiply": None, "Negate": None, "Noise": NOISE, "Normalize": None,
+        "MatrixMultiply": None, "Maximum": None, "Minimum": None, "Modulo": None, "MoveToTarget": None,
+        "MoveToTransform": None, "Multiply": None, "Negate": None, "Noise": NOISE, "Normalize": None,
         "NthRoot": None, "RandomBoolean": None, "RandomGaussian": None, "RandomUnitQuaternion": None,
         "RandomUnitVector": None, "ReadGamepadState": None, "ReadKeyboardState": None, "ReadMouseState": None,
         "ReadOmniGraphValue": GRAPH_VALUES, "ReadPrim": None, "ReadPrimAttribute": None,
@@ -105,15 +100,15 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ReadPrimMaterial": None, "ReadPrimRelationship": None, "ReadPrims": None, "ReadPrimsBundle": None,
         "ReadPrimsV2": None, "ReadSetting": SETTINGS, "ReadTime": None, "RemoveAttribute": None,
         "RenameAttribute": None, "ReplaceString": None, "ReplaceTargetName": None, "ReplaceTargets": None,
-        "RotateToOrientation": MANEUVER, "RotateToTarget": MANEUVER, "RotateVector": None, "Round": None,
-        "RpResourceExampleHydra": None, "ScaleToSize": MANEUVER, "SelectIf": None, "SelectTargetIf": None,
+        "RotateToOrientation": None, "RotateToTarget": None, "RotateVector": None, "Round": None,
+        "RpResourceExampleHydra": None, "ScaleToSize": None, "SelectIf": None, "SelectTargetIf": None,
         "SetMatrix4Quaternion": None, "SetMatrix4Rotation": None, "SetMatrix4Scale": None,
-        "SetMatrix4Translation": None, "SetTarget": None, "SetTimeline": TIMELINE, "SetVariantSelection": None,
-        "Sin": None, "SourceIndices": GEOMETRY, "StartsWith": None, "StartTimeline": TIMELINE,
-        "StopTimeline": TIMELINE, "Subtract": None, "Tan": None, "Timer": None, "ToBool": None, "ToDeg": None,
+        "SetMatrix4Translation": None, "SetTarget": None, "SetTimeline": None, "SetVariantSelection": None,
+        "Sin": None, "SourceIndices": GEOMETRY, "StartsWith": None, "StartTimeline": None,
+        "StopTimeline": None, "Subtract": None, "Tan": None, "Timer": None, "ToBool": None, "ToDeg": None,
         "ToDouble": None, "ToFloat": None, "ToHalf": None, "ToInt": None, "ToInt64": None, "ToRad": None,
         "ToString": None, "ToTarget": None, "ToToken": None, "ToUchar": None, "ToUint": None, "ToUint64": None,
-        "TransformVector": None, "TranslateToLocation": MANEUVER, "TranslateToTarget": MANEUVER, "Transpose": None,
+        "TransformVector": None, "TranslateToLocation": None, "TranslateToTarget": None, "Transpose": None,
         "Trig": None, "WritePrim": None, "WritePrimAttribute": None, "WritePrimLocalTransform": None,
         "WritePrimMaterial": None, "WritePrimRelationship": None, "WritePrims": None,
         "WritePrimsV2": None, "WriteSetting": SETTINGS}),
@@ -127,7 +122,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "IsaacReadFilePath": None, "IsaacReadSimulationTime": None, "IsaacReadSimulationTimeAnnotator": None,
         "IsaacReadSystemTime": None, "IsaacReadSystemTimeAnnotator": None, "IsaacReadTimes": None, "IsaacReadWorldPose": None,
         "IsaacRealTimeFactor": REAL_TIME_FACTOR, "IsaacSetCameraOnRenderProduct": None, "IsaacSetViewportResolution": None,
-        "IsaacSimulationGate": None, "IsaacTestNode": TEST_ONLY, "IsaacTimeSplitter": None,
+        "IsaacSimulationGate": None, "IsaacTestNode": None, "IsaacTimeSplitter": None,
         "OgnIsaacRunOneSimulationFrame": None, "OgnIsaacScaleToFromStageUnit": None, "OnPhysicsStep": None}),
     "isaacsim.ros2.bridge / isaacsim.ros2.nodes": _ids(_ROS2, {
         "OgnROS2ServiceClient": None, "OgnROS2ServiceServerRequest": None,

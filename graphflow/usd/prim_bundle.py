@@ -56,6 +56,14 @@ class PrimReader:
             attributes.extend(self._boxes[key[0]])
         return Bundle.of_prim(key[0], prim.GetTypeName(), tuple(attributes))
 
+    def forget(self, prim_path: str) -> None:
+        """Compose the prim and its descendants again on their next read (an animation moved them)."""
+        below = prim_path + "/"
+        for key in [key for key in self._composed if key[0] == prim_path or key[0].startswith(below)]:
+            del self._composed[key]
+        for path in [path for path in self._boxes if path == prim_path or path.startswith(below)]:
+            del self._boxes[path]
+
 
 def _composed(prim, time: float | None) -> tuple:
     """(USD's attributes with their values, (USD's world matrix, its rigid part's inverse) or None)."""

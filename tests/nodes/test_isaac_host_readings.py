@@ -1,4 +1,4 @@
-"""IsaacReadEnvVar and IsaacReadFilePath: host readings taken once per run, so a run repeats exactly."""
+"""IsaacReadEnvVar and IsaacReadFilePath: host readings taken once per run, so a run repeats exactly; IsaacTestNode."""
 import pytest
 
 from graphflow.executor import GraphRuntimeError
@@ -60,3 +60,19 @@ def test_an_empty_path_gives_the_empty_string_with_a_warning():
     node = NodeHarness(FILE)
     assert node.compute().outputs["fileContents"] == ""
     assert any("inputs:path is empty" in line for line in node.logs)
+
+
+def test_isaac_test_node_echoes_its_input_only_when_pulsed():
+    """Isaac's test probe: the output is the input as of the last execIn, not a live copy."""
+    graph = GraphHarness({
+        "nodes": [{"name": "tick", "type": "omni.graph.action.OnTick"},
+                  {"name": "probe", "type": "omni.isaac.core_nodes.IsaacTestNode", "inputs": {"input": "ready"}}],
+        "connections": [{"src": "tick.outputs:tick", "dst": "probe.inputs:execIn"}],
+    })
+    assert graph.output("probe", "output") == ""
+    graph.run(1)
+    assert graph.output("probe", "output") == "ready"
+    graph.instance.set_input("probe", "input", "changed")
+    assert graph.output("probe", "output") == "ready"
+    graph.run(1)
+    assert graph.output("probe", "output") == "changed"

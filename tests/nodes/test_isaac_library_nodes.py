@@ -124,6 +124,33 @@ def _wheel_rows(radius=0.05):
     return rows
 
 
+def test_holonomic_three_wheel_example_of_isaacs_own_test():
+    """Isaac's controller test: a three-wheel omni base (90 degree rollers, wheels turned 0 and +-120 degrees
+    about x, orientations w-first) commanded (1, 1, 0.1). Three wheels, three constraints: the speeds are the
+    system's unique solution, which Isaac's QP solver (OSQP, tolerance 1e-3) reaches within 0.05 %; its test
+    expects -25.105, 14.3182, -14.5417."""
+    speeds = NodeHarness(HOLONOMIC, {
+        "wheelRadius": [0.04, 0.04, 0.04], "mecanumAngles": [90, 90, 90], "inputVelocity": [1.0, 1.0, 0.1],
+        "wheelOrientations": [[0, 0, 0, 1], [0.866, 0, 0, -0.5], [0.866, 0, 0, 0.5]],
+        "wheelPositions": [[-0.0980432, 0.000636773, -0.050501], [0.0493475, -0.084525, -0.050501],
+                           [0.0495291, 0.0856937, -0.050501]]}).compute("execIn").outputs["jointVelocityCommand"]
+    assert speeds == pytest.approx([-25.105, 14.3182, -14.5417], rel=5e-4)
+    import numpy as np
+
+    # the same system built independently: a wheel's x axis turned by its quaternion, then 90 degrees about z
+    directions = []
+    for w, x, y, z in [(0, 0, 0, 1), (0.866, 0, 0, -0.5), (0.866, 0, 0, 0.5)]:
+        norm = math.sqrt(w * w + x * x + y * y + z * z)
+        w, x, y, z = w / norm, x / norm, y / norm, z / norm
+        axis = np.array([1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)])   # R @ (1, 0, 0)
+        turned = np.array([-axis[1], axis[0], axis[2]])
+        directions.append(turned / np.linalg.norm(turned) * 0.04)
+    positions = [(-0.0980432, 0.000636773), (0.0493475, -0.084525), (0.0495291, 0.0856937)]
+    a = np.array([[d[0] for d in directions], [d[1] for d in directions],
+                  [d[0] * p[1] - d[1] * p[0] for d, p in zip(directions, positions)]])
+    assert speeds == pytest.approx(list(np.linalg.solve(a, [1.0, 1.0, 0.1])), rel=1e-9)
+
+
 @pytest.mark.parametrize("command", [(0.4, 0.0, 0.0), (0.0, 0.3, 0.0), (0.2, -0.1, 0.8)])
 def test_holonomic_wheel_speeds_satisfy_the_programs_optimality_conditions(command):
     speeds = NodeHarness(HOLONOMIC, {**MECANUM, "inputVelocity": list(command)}).compute("execIn").outputs[

@@ -71,6 +71,13 @@ STAGE_INPUTS = {
     "omni.graph.nodes.ReadPrimMaterial": {"prim": CUBE},
     "omni.graph.nodes.GetVariantSetNames": {"prim": CUBE},
     "omni.graph.nodes.HasVariantSet": {"prim": CUBE, "variantSetName": "look"},
+    "omni.graph.nodes.TranslateToLocation": {"prim": CUBE, "target": [0.6, 0.0, 0.3]},
+    "omni.graph.nodes.RotateToOrientation": {"prim": CUBE, "target": [0.0, 0.0, 90.0]},
+    "omni.graph.nodes.ScaleToSize": {"prim": CUBE, "target": [1.0, 1.0, 1.0]},
+    "omni.graph.nodes.MoveToTransform": {"prim": CUBE},
+    "omni.graph.nodes.TranslateToTarget": {"sourcePrim": CUBE, "targetPrim": EE},
+    "omni.graph.nodes.RotateToTarget": {"sourcePrim": CUBE, "targetPrim": EE},
+    "omni.graph.nodes.MoveToTarget": {"sourcePrim": CUBE, "targetPrim": EE},
 }
 
 # types whose prim the packaged stage lacks: on it they must refuse clearly, naming the prim

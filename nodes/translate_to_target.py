@@ -1,0 +1,63 @@
+"""omni.graph.nodes.TranslateToTarget: move a prim to where another prim is, over time (a latent maneuver)."""
+from graphflow.spec import NodeSpec
+from graphflow_nodes._animation import (
+    ELAPSED,
+    EXEC_IN,
+    EXPONENT,
+    FINISHED,
+    LAST_FRAME,
+    MANEUVER,
+    SOURCE_PRIM,
+    SOURCE_PRIM_PATH,
+    SPEED,
+    STOP,
+    TARGET_PRIM,
+    TARGET_PRIM_PATH,
+    USE_SOURCE_PATH,
+    USE_TARGET_PATH,
+    prim_path,
+    run_maneuver,
+    world_goal,
+)
+
+SPEC = NodeSpec(
+    id="omni.graph.nodes.TranslateToTarget",
+    version=2,
+    compatible_versions=(1,),
+    description=("On execIn, translates the source prim (sourcePrimPath when useSourcePath, else sourcePrim) to the target prim's position (targetPrimPath when useTargetPath, else targetPrim); its rotation and scale stay. The goal is read when execIn fires: the target prim's world pose expressed in the source's parent frame, so the source ends where the target is in the world. " + MANEUVER),
+    categories=("sceneGraph",),
+    ui_name="Translate To Target",
+    inputs=(
+        EXEC_IN,
+        EXPONENT,
+        SOURCE_PRIM,
+        SOURCE_PRIM_PATH,
+        SPEED,
+        STOP,
+        TARGET_PRIM,
+        TARGET_PRIM_PATH,
+        USE_SOURCE_PATH,
+        USE_TARGET_PATH,
+    ),
+    outputs=(
+        FINISHED,
+    ),
+    state=(
+        ELAPSED,
+        LAST_FRAME,
+    ),
+)
+
+
+def _source(db) -> str:
+    return prim_path(db, "sourcePrim", "sourcePrimPath", "useSourcePath")
+
+
+def _goal(db, start):
+    source = _source(db)
+    target = prim_path(db, "targetPrim", "targetPrimPath", "useTargetPath")
+    return world_goal(db, source, target)[0], start[1], start[2]
+
+
+def compute(db):
+    run_maneuver(db, _source, _goal)
