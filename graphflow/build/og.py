@@ -27,8 +27,19 @@ from typing import Any
 
 from pxr import Sdf
 
-from graphflow.build import og_legacy
+from graphflow.build import og_legacy, og_lookup
 from graphflow.build.graph import Graph, NodeHandle, Port
+from graphflow.build.og_lookup import BUILT_GRAPHS, DataView, ObjectLookup, get_all_graphs, get_graph_by_path
+from graphflow.build.og_names import (
+    REMOVED_INPUTS,
+    SUPPORTED,
+    AttributeRole,
+    BaseDataType,
+    GraphPipelineStage,
+    Keys,
+    Type,
+    variable_type,
+)
 from graphflow.errors import BadInput
 from graphflow.spec import NodeSpec
 from graphflow.usd.node_mapping import (
@@ -41,85 +52,120 @@ from graphflow.usd.node_mapping import (
 
 MESSAGE_FIELD = "graphflow.ROS2MessageField"
 
-__all__ = ["Controller", "GraphController", "Type", "BaseDataType", "GraphPipelineStage", "OgCompatWarning",
-           "get_graph_by_path"]
+__all__ = ["Controller", "GraphController", "ObjectLookup", "DataView", "Type", "BaseDataType", "AttributeRole",
+           "GraphPipelineStage", "OgCompatWarning", "get_graph_by_path", "get_all_graphs"]
 
 
 class OgCompatWarning(UserWarning):
     """One line about what an edit carried over differently from Kit (a dropped node, the evaluator)."""
 
 
-class Keys:
-    """The edit keys Isaac scripts use (``og.Controller.Keys``)."""
-
-    CREATE_NODES = "create_nodes"
-    CREATE_VARIABLES = "create_variables"
-    CREATE_ATTRIBUTES = "create_attributes"
-    CONNECT = "connect"
-    DISCONNECT = "disconnect"
-    DELETE_NODES = "delete_nodes"
-    SET_VALUES = "set_values"
-
-
-SUPPORTED = (Keys.DELETE_NODES, Keys.CREATE_VARIABLES, Keys.CREATE_NODES, Keys.CREATE_ATTRIBUTES, Keys.CONNECT,
-             Keys.DISCONNECT, Keys.SET_VALUES)   # OmniGraph's order of operations within one edit
-
-
-class GraphPipelineStage:
-    """``og.GraphPipelineStage`` members scripts pass as ``pipeline_stage``."""
-
-    GRAPH_PIPELINE_STAGE_SIMULATION = "simulation"
-    GRAPH_PIPELINE_STAGE_PRERENDER = "prerender"
-    GRAPH_PIPELINE_STAGE_POSTRENDER = "postrender"
-    GRAPH_PIPELINE_STAGE_ONDEMAND = "ondemand"
-
-
-class BaseDataType:
-    """``og.BaseDataType`` members scripts pass to ``og.Type`` for variables, as graphflow type names."""
-
-    BOOL, UCHAR, INT, UINT, INT64, UINT64 = "bool", "uchar", "int", "uint", "int64", "uint64"
-    FLOAT, DOUBLE, HALF, TOKEN, PATH = "float", "double", "half", "token", "path"
-
-
-class Type:
-    """``og.Type(base, tuple_count=1, array_depth=0)``: a variable's type, spelled as graph files spell it."""
-
-    def __init__(self, base: str, tuple_count: int = 1, array_depth: int = 0):
-        self.name = base + (f"[{tuple_count}]" if tuple_count > 1 else "") + "[]" * array_depth
-
-    def __str__(self) -> str:
-        return self.name
-
-
-# Inputs Isaac 4.x scripts set that later versions of the node removed (the 4.x .ogn against today's):
-# dropped with one line saying what replaced them.
-REMOVED_INPUTS = {
-    "isaacsim.core.nodes.IsaacArticulationController": {
-        "usePath": "Isaac 4.x's switch between robotPath and targetPrim; since 4.5 robotPath is used when set, "
-                   "else targetPrim"},
-}
-
 # ``graphflow import --skip-unknown`` for scripts: set ``og.skip_unknown = True`` after the import and node types
 # graphflow lacks are left out with one line each (their connections and values too) instead of refused
 skip_unknown = False
 
-_graphs: dict[str, Graph] = {}
+_graphs = BUILT_GRAPHS
 _dropped: "weakref.WeakKeyDictionary[Graph, set[str]]" = weakref.WeakKeyDictionary()   # renderer nodes left out
 _legacy: "weakref.WeakKeyDictionary[Graph, set[str]]" = weakref.WeakKeyDictionary()    # Isaac 4.x grippers (v1)
 
 
-def get_graph_by_path(path: str) -> Graph | None:
-    """The graph an earlier ``edit`` made at *path* (``og.get_graph_by_path``)."""
-    return _graphs.get(path)
-
-
-class Controller:
-    """``og.Controller``: ``edit`` is what graph-building scripts use."""
+class Controller(ObjectLookup, DataView):
+    """``og.Controller``: ``edit`` is what graph-building scripts use; lookups (``node``, ``attribute``, ``graph``)
+    and ``get`` come from ``og_lookup``. An instance (``og.Controller(graph_id)``) edits and evaluates its graph
+    when none is given, gets and sets its ``attribute``, as Kit's object methods do."""
 
     Keys = Keys
 
+    def __init__(self, *args: Any, **kwargs: Any):
+        first = args[0] if args else None
+        own_attribute = first if isinstance(first, og_lookup.Attribute) else None
+        DataView.__init__(self, kwargs.get("attribute", own_attribute))
+        self.graph_id = kwargs.get("graph_id", None if own_attribute is not None else first)
+        self.edit = self._edit_own              # type: ignore[method-assign]
+        self.evaluate_sync = self._evaluate_own  # type: ignore[method-assign]
+        self.evaluate = self._evaluate_async_own  # type: ignore[method-assign]
+        self.set = self._set_own                # type: ignore[method-assign]
+
+    def _edit_own(self, *args: Any, **kwargs: Any) -> tuple:
+        """``controller.edit(commands)`` on its graph, or ``controller.edit(graph_id, commands)``; it keeps the graph."""
+        commands_only = bool(args) and isinstance(args[0], dict) and "graph_path" not in args[0]
+        graph_id = self.graph_id if commands_only or not args else args[0]
+        rest = args if commands_only else args[1:]
+        graph_id = kwargs.pop("graph_id", graph_id)
+        if graph_id is None:
+            raise BadInput("og.Controller().edit: no graph given (og.Controller(\"/ActionGraph\") or edit(graph_id, ...))")
+        result = Controller.edit(graph_id, *rest, **kwargs)
+        self.graph_id = result[0]
+        return result
+
+    def _evaluate_own(self, graph_id: Any = None, **_options: Any) -> None:
+        Controller.evaluate_sync(graph_id if graph_id is not None else self.graph_id)
+
+    async def _evaluate_async_own(self, graph_id: Any = None, **_options: Any) -> None:
+        self._evaluate_own(graph_id)
+
+    def _set_own(self, *args: Any, **options: Any) -> None:
+        """``controller.set(value)`` on its attribute, or ``controller.set(attribute, value)``."""
+        if len(args) == 1 and self.attribute_id is not None:
+            args = (self.attribute_id, args[0])
+        Controller.set(*args, **options)
+
     @classmethod
-    def edit(cls, graph_id: Any, edit_commands: dict | None = None, **_options) -> tuple:
+    def evaluate_sync(cls, graph_id: Any = None, **_options: Any) -> None:   # type: ignore[misc]
+        """Not an evaluation: the script builds the graph; ``graphflow run`` evaluates it every tick (one line)."""
+        ids = graph_id if isinstance(graph_id, list) else [graph_id] if graph_id is not None else None
+        paths = sorted(BUILT_GRAPHS) if ids is None else [og_lookup.graph_path(cls._existing(i)) for i in ids]
+        _warn(f"evaluate({', '.join(paths) or 'no graphs'}): not evaluated here: the script builds the graph; "
+              "`graphflow run FILE` evaluates it every tick")
+
+    @classmethod
+    async def evaluate(cls, graph_id: Any = None, **_options: Any) -> None:
+        cls.evaluate_sync(graph_id)
+
+    @classmethod
+    def _existing(cls, graph_id: Any) -> Graph:
+        graph = og_lookup.find_graph(graph_id)
+        if graph is None:
+            raise BadInput(f"og.Controller: the graph {graph_id!r} does not exist (graphs built: "
+                           f"{', '.join(sorted(BUILT_GRAPHS)) or 'none'})")
+        return graph
+
+    @classmethod
+    def create_graph(cls, graph_id: Any, **_options: Any) -> Graph:
+        return _graph_of(graph_id)
+
+    @classmethod
+    def create_node(cls, node_id: Any, node_type_id: str, **_options: Any) -> NodeHandle | None:
+        """A node at ``"/Graph/name"`` or ``("name", graph)`` in a graph already made; None when dropped (one line)."""
+        if not isinstance(node_id, tuple) and "/" not in str(node_id):
+            raise BadInput(f"og.Controller.create_node: {node_id!r} names no graph (give \"/Graph/name\" or (name, graph))")
+        name, graph_part = node_id if isinstance(node_id, tuple) else reversed(str(node_id).rsplit("/", 1))
+        made = _create(cls._existing(graph_part), name, node_type_id)
+        return og_lookup.node(made) if made is not None else None
+
+    @classmethod
+    def delete_node(cls, node_id: Any, **_options: Any) -> None:
+        found = og_lookup.node(node_id)
+        found.graph.delete(found.name)
+
+    @classmethod
+    def create_variable(cls, graph_id: Any, name: str, var_type: Any, **_options: Any) -> None:
+        cls._existing(graph_id).variable(name, str(var_type))
+
+    @classmethod
+    def attribute(cls, attribute_id: Any, node_id: Any = None, graph: Any = None) -> Any:
+        """``og.Controller.attribute``; a port of a node the edit dropped stays its path (its uses are dropped too)."""
+        try:
+            return og_lookup.attribute(attribute_id, node_id, graph)
+        except BadInput:
+            port = _port((attribute_id, node_id) if node_id is not None else attribute_id)
+            matches = [g for path, g in BUILT_GRAPHS.items() if str(port).startswith(path + "/")]
+            if matches and _node_of(matches[0], port) in _dropped.get(matches[0], set()):
+                return port
+            raise
+
+    @classmethod
+    def edit(cls, graph_id: Any, edit_commands: dict | None = None, **_options) -> tuple:   # type: ignore[misc]
         """Apply *edit_commands* to the graph *graph_id* names (a dict with ``graph_path``, a path, a Graph)."""
         graph = _graph_of(graph_id)
         commands = dict(edit_commands or {})
@@ -131,15 +177,17 @@ class Controller:
             graph.delete(_node_name(name))
         for entry in _as_list(commands.get(Keys.CREATE_VARIABLES)):
             name, type_name, *default = entry
-            graph.variable(name, str(type_name), *default)
+            graph.variable(name, variable_type(type_name), *default)
         made = [_create(graph, name, type_id) for name, type_id in _pairs(commands.get(Keys.CREATE_NODES))]
-        created = [node for node in made if node is not None]
+        created = [og_lookup.node(node) for node in made if node is not None]
         for target, *_type in _pairs(commands.get(Keys.CREATE_ATTRIBUTES), width=None):
             _declared(graph, _port(target))
         for src, dst in _wired(graph, _kept(graph, _pairs(commands.get(Keys.CONNECT)))):
             graph.connect(_mapped(graph, _source(graph, src)), _mapped(graph, _port(dst)))
         for src, dst in _kept(graph, _pairs(commands.get(Keys.DISCONNECT))):
             graph.disconnect(_mapped(graph, _source(graph, src)), _mapped(graph, _port(dst)))
+        for attribute in _as_list(commands.get(Keys.DISCONNECT_ALL)):
+            _disconnect_all(graph, _port(attribute))
         values = _current(graph, _kept(graph, [(target, value) for target, value, *_type
                                                in _pairs(commands.get(Keys.SET_VALUES), width=None)], ports=1))
         if values:
@@ -148,20 +196,7 @@ class Controller:
         return graph, created, [], lookup
 
     @classmethod
-    def attribute(cls, path: Any, node: Any = None) -> str:
-        """``og.Controller.attribute("/ActionGraph/node.inputs:x")`` or ``("inputs:x", node)``: the port's full path."""
-        if node is not None:
-            path = (path, node)
-        if not isinstance(path, tuple):
-            return str(path)
-        attribute, owner = path
-        if isinstance(owner, NodeHandle):
-            graph_path = next((p for p, graph in _graphs.items() if graph is owner.graph), "")
-            return f"{graph_path}/{owner.name}.{attribute}"
-        return f"{owner}.{attribute}"   # the node given by its path, "/ActionGraph/node"
-
-    @classmethod
-    def set(cls, attribute: Any, value: Any, **_options) -> None:
+    def set(cls, attribute: Any, value: Any, **_options) -> None:   # type: ignore[misc]
         """``og.Controller.set(attribute, value)``: author an input of a graph an earlier edit made."""
         graph, port = _graph_and_port(attribute)
         if _current(graph, _kept(graph, [(port, value)], ports=1)):
@@ -172,6 +207,11 @@ class Controller:
         graph, source = _graph_and_port(src)
         if _wired(graph, _kept(graph, [(source, _graph_and_port(dst)[1])])):
             graph.connect(_mapped(graph, _source(graph, source)), _mapped(graph, _graph_and_port(dst)[1]))
+
+    @classmethod
+    def disconnect_all(cls, attribute: Any, **_options) -> None:
+        graph, port = _graph_and_port(attribute)
+        _disconnect_all(graph, port)
 
     @classmethod
     def disconnect(cls, src: Any, dst: Any, **_options) -> None:
@@ -186,6 +226,8 @@ GraphController = Controller
 def _graph_and_port(attribute: Any) -> tuple[Graph, str | Port]:
     """The graph a full attribute path ("/ActionGraph/node.inputs:x") belongs to (the longest graph path first)."""
     text = _port(attribute)
+    if isinstance(attribute, tuple) and len(attribute) == 2 and isinstance(attribute[1], NodeHandle):
+        return attribute[1].graph, text   # ("inputs:x", node): the node's own graph
     if isinstance(text, Port):
         matches = [graph for graph in _graphs.values() if graph.document.node(text.node) is not None]
     else:
@@ -194,6 +236,15 @@ def _graph_and_port(attribute: Any) -> tuple[Graph, str | Port]:
         raise BadInput(f"og.Controller: {text}: no graph made by og.Controller.edit holds it "
                        f"(graphs: {', '.join(sorted(_graphs)) or 'none'})")
     return matches[0], text
+
+
+def _disconnect_all(graph: Graph, port: str | Port) -> None:
+    """Every connection to or from *port* broken (``DISCONNECT_ALL``)."""
+    node = _node_of(graph, port)
+    name = f"{node}.{str(port).rsplit('.', 1)[-1]}"
+    for connection in graph.document.connections:
+        if name in (connection.src, connection.dst):
+            graph.disconnect(connection.src, connection.dst)
 
 
 def _graph_of(graph_id: Any) -> Graph:
@@ -219,9 +270,12 @@ def _warn(line: str) -> None:
     warnings.warn(OgCompatWarning(f"og.Controller.edit: {line}"), stacklevel=4)
 
 
-def _create(graph: Graph, name: str, type_id: str) -> NodeHandle | None:
+def _create(graph: Graph, name: str, type_id: Any) -> NodeHandle | None:
     """The node, or None for a renderer/GUI type (or, with ``skip_unknown``, a type graphflow lacks), dropped with
     one line as the importer drops it."""
+    if not isinstance(type_id, str):   # a dict of edits makes a compound node in Kit
+        raise BadInput(f"og.Controller.edit: node '{name}': {type(type_id).__name__} as its type: compound nodes "
+                       "(a subgraph of edits) are not built here; give a node type id")
     reason = RENDERING_NODES.get(type_id)
     if reason is None and skip_unknown and graph.registry.get(type_id) is None and type_id != og_legacy.V1_ID:
         hint = graph.registry.suggest(type_id)
@@ -430,7 +484,11 @@ def _node_name(node: Any) -> str:
 
 def _port(port: Any) -> str | Port:
     """A port as scripts write it: ``"node.inputs:x"``, a full path, a Port, or ``("inputs:x", node)``."""
+    if isinstance(port, og_lookup.Attribute):
+        return port.get_path()
     if isinstance(port, tuple) and len(port) == 2:
         attribute, node = port
+        if isinstance(node, str) and node.startswith("/"):   # ("inputs:x", "/ActionGraph/node")
+            return f"{node}.{attribute}"
         return f"{_node_name(node)}.{attribute}"
     return port if isinstance(port, Port) else str(port)

@@ -38,6 +38,7 @@ from graphflow.usd.graph_parts import (
     map_version,
     prefixed,
 )
+from graphflow.usd.node_eras import era_inputs, era_of, upgraded_values
 from graphflow.usd.node_mapping import (
     GENERIC_PUBLISHERS,
     GENERIC_SUBSCRIBERS,
@@ -174,12 +175,21 @@ def _import_one(stage, graph_prim, label: str, registry: Registry, skip_unknown:
             else:
                 problems.append(message)
             continue
+        authored_version = int(version) if version is not None else None
+        era = era_of(type_id, _ports(prim), f"{label}: node '{name}'", warnings)
+        if era is not None:   # the node an older omni.graph.nodes hosted under this id (node_eras)
+            node_type, type_id = registry.get(era.now), era.now
+            assert node_type is not None, era.now   # ERAS names implemented types (tests/usd/test_node_eras.py)
+            version = node_type.spec.version
+            renames.update({(name, old): (f"{name}.{new}" if new else None) for old, new in era.renames.items()})
         kept[name] = node_type
         if version is not None and _version_mapped(node_type.spec, int(version)):
             changes = map_version(node_type.spec, int(version), _ports(prim), f"{label}: node '{name}'", warnings)
             renames.update({(name, old): (f"{name}.{new}" if new else None) for old, new in changes.items()})
             version = node_type.spec.version
         inputs = _mapped_inputs(prim, node_type, label, warnings, problems, renames)
+        inputs = upgraded_values(type_id, authored_version, era_inputs(era, inputs) if era else inputs,
+                                 f"{label}: node '{name}'", warnings)
         if legacy_gripper and any(prim.GetAttribute(pin).GetConnections() for pin in LEGACY_GRIPPER_COMMANDS):
             command, link = legacy_gripper_command_node(name, f"{label}: node '{name}'", warnings)
             nodes.append(command)
@@ -229,14 +239,17 @@ def _stage_reference(stage_path: str, output_path: str | None) -> str:
     return Path(os.path.relpath(Path(stage_path).resolve(), base)).as_posix()
 
 
-def _authored_inputs(prim, node_type, label: str, warnings: list[str], removed: frozenset | set = frozenset()) -> dict:
-    """Authored values of graphflow's inputs; others dropped with a line (*removed*: already named by a version map)."""
+def _authored_inputs(prim, node_type, label: str, warnings: list[str], removed: frozenset | set = frozenset(),
+                     moved: dict | None = None) -> dict:
+    """Authored values of graphflow's inputs; others dropped with a line (*removed*: already named by a version map,
+    *moved*: inputs a version map renamed, old -> new)."""
     spec = node_type.spec
     inputs = {}
     for prop in prim.GetAuthoredProperties():
         name = prop.GetName()
         if not name.startswith("inputs:") or name in removed:
             continue
+        name = (moved or {}).get(name, name)
         attribute = spec.attribute(name)
         if attribute is None:
             if _has_content(prop):
@@ -283,7 +296,8 @@ def _mapped_inputs(prim, node_type, label: str, warnings: list[str], problems: l
             inputs["messageFields"] = gather_message_fields(fields, where, warnings)
         return inputs
     removed = {port for (node, port), new in renames.items() if node == name and new is None}
-    return _authored_inputs(prim, node_type, label, warnings, removed)
+    moved = {port: new.split(".", 1)[1] for (node, port), new in renames.items() if node == name and new}
+    return _authored_inputs(prim, node_type, label, warnings, removed, moved)
 
 
 def _raw_inputs(prim) -> dict:
