@@ -17,10 +17,6 @@ from graphflow.usd.node_mapping import RENDERING_NODES
 REAL_TIME_FACTOR = ("its one output is simulated time over wall-clock time, which differs from run to run and "
                     "machine to machine; graphflow traces are bit-identical for the same inputs and seed, so a "
                     "wall-clock reading is not carried into a graph")
-PRIM_EDIT = "changes the stage's prims while running, which graphflow's world does not do"
-VARIANTS = ("reads or switches USD variant selections; graphflow composes the stage once, at load, with the "
-            "selections the file authors")
-MATERIALS = "reads or binds render materials, which only Kit's renderer uses"
 NOISE = ("Kit's reference says only 'Perlin noise'; its C++ calls a private copy of pre-release Warp's noise() "
          "(warp_noise.h, not published), and Warp's 2-4D gradients changed since (a random angle, then a "
          "normalised unit-square sample), so values would not match Kit's")
@@ -37,7 +33,7 @@ def _ids(prefix: str, names: dict[str, str | None]) -> dict[str, str | None]:
 
 LIBRARIES: dict[str, dict[str, str | None]] = {
     "omni.graph.action": _ids("omni.graph.action", {
-        "AddPrimRelationship": PRIM_EDIT, "Branch": None, "Countdown": None, "Counter": None, "Delay": None,
+        "AddPrimRelationship": None, "Branch": None, "Countdown": None, "Counter": None, "Delay": None,
         "ExitApplication": None, "FlipFlop": None, "ForEach": None, "ForEachTarget": None, "ForLoop": None,
         "Gate": None, "Multigate": None, "Multisequence": None, "OnClosing": None, "OnCustomEvent": None,
         "OnGamepadInput": None, "OnImpulseEvent": None, "OnKeyboardInput": None, "OnLoaded": None,
@@ -52,12 +48,12 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ArrayFill": None, "ArrayFindValue": None, "ArrayGetSize": None, "ArrayIndex": None, "ArrayInsertValue": None,
         "ArrayLength": None, "ArrayRemoveIndex": None, "ArrayRemoveValue": None, "ArrayReplaceValue": None,
         "ArrayResize": None, "ArrayReverse": None, "ArrayRotate": None, "ArraySetIndex": None, "ArraySlice": None,
-        "Asin": None, "Atan": None, "ATan2": None, "AttributeType": None, "BlendVariants": VARIANTS,
+        "Asin": None, "Atan": None, "ATan2": None, "AttributeType": None, "BlendVariants": None,
         "BooleanAnd": None, "BooleanExpr": None, "BooleanNand": None, "BooleanNor": None, "BooleanNot": None,
         "BooleanOr": None, "BooleanXor": None, "BreakMatrix2": None, "BreakMatrix3": None, "BreakMatrix4": None,
         "BreakVector2": None, "BreakVector3": None, "BreakVector4": None, "BuildString": None,
         "BundleConstructor": None, "BundleInspector": None, "BundleToUSDA": None, "CapitalizeString": None,
-        "Ceil": None, "Clamp": None, "ClearVariantSelection": VARIANTS, "Compare": None, "CompareTargets": None,
+        "Ceil": None, "Clamp": None, "ClearVariantSelection": None, "Compare": None, "CompareTargets": None,
         "ConstantBool": None, "ConstantColor3d": None, "ConstantColor3f": None, "ConstantColor3h": None,
         "ConstantColor4d": None, "ConstantColor4f": None, "ConstantColor4h": None, "ConstantDouble": None,
         "ConstantDouble2": None, "ConstantDouble3": None, "ConstantDouble4": None, "ConstantE": None,
@@ -83,9 +79,9 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "GetPrimDirectionVector": None, "GetPrimLocalToWorldTransform": None, "GetPrimPath": None,
         "GetPrimPaths": None, "GetPrimRelationship": None, "GetPrims": None, "GetPrimsAtPath": None,
         "GetString": None, "GetStringLength": None, "GetTargets": None, "GetTargetsSize": None,
-        "GetTimeline": None, "GetVariantNames": VARIANTS, "GetVariantSelection": VARIANTS,
-        "GetVariantSetNames": VARIANTS, "GpuInteropCudaEntry": None, "GpuInteropRenderProductEntry": None,
-        "GraphTarget": None, "HasAttribute": None, "HasVariantSet": VARIANTS, "Increment": None,
+        "GetTimeline": None, "GetVariantNames": None, "GetVariantSelection": None,
+        "GetVariantSetNames": None, "GpuInteropCudaEntry": None, "GpuInteropRenderProductEntry": None,
+        "GraphTarget": None, "HasAttribute": None, "HasVariantSet": None, "Increment": None,
         "InsertAttribute": None, "InsertString": None, "InsertTargets": None, "Interpolator": None,
         "IsPrimActive": None, "IsPrimSelected": None, "IsZero": None, "JoinString": None,
         "LengthAlongCurve": None, "LoopTimeline": None, "Magnitude": None,
@@ -98,20 +94,20 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "RandomUnitVector": None, "ReadGamepadState": None, "ReadKeyboardState": None, "ReadMouseState": None,
         "ReadOmniGraphValue": None, "ReadPrim": None, "ReadPrimAttribute": None,
         "ReadPrimAttributes": None, "ReadPrimBundle": None, "ReadPrimLocalTransform": None,
-        "ReadPrimMaterial": MATERIALS, "ReadPrimRelationship": None, "ReadPrims": None, "ReadPrimsBundle": None,
+        "ReadPrimMaterial": None, "ReadPrimRelationship": None, "ReadPrims": None, "ReadPrimsBundle": None,
         "ReadPrimsV2": None, "ReadSetting": None, "ReadTime": None, "RemoveAttribute": None,
         "RenameAttribute": None, "ReplaceString": None, "ReplaceTargetName": None, "ReplaceTargets": None,
         "RotateToOrientation": None, "RotateToTarget": None, "RotateVector": None, "Round": None,
         "RpResourceExampleHydra": None, "ScaleToSize": None, "SelectIf": None, "SelectTargetIf": None,
         "SetMatrix4Quaternion": None, "SetMatrix4Rotation": None, "SetMatrix4Scale": None,
-        "SetMatrix4Translation": None, "SetTarget": None, "SetTimeline": None, "SetVariantSelection": VARIANTS,
+        "SetMatrix4Translation": None, "SetTarget": None, "SetTimeline": None, "SetVariantSelection": None,
         "Sin": None, "SourceIndices": None, "StartsWith": None, "StartTimeline": None,
         "StopTimeline": None, "Subtract": None, "Tan": None, "Timer": None, "ToBool": None, "ToDeg": None,
         "ToDouble": None, "ToFloat": None, "ToHalf": None, "ToInt": None, "ToInt64": None, "ToRad": None,
         "ToString": None, "ToTarget": None, "ToToken": None, "ToUchar": None, "ToUint": None, "ToUint64": None,
         "TransformVector": None, "TranslateToLocation": None, "TranslateToTarget": None, "Transpose": None,
         "Trig": None, "WritePrim": None, "WritePrimAttribute": None, "WritePrimLocalTransform": None,
-        "WritePrimMaterial": MATERIALS, "WritePrimRelationship": PRIM_EDIT, "WritePrims": None,
+        "WritePrimMaterial": None, "WritePrimRelationship": None, "WritePrims": None,
         "WritePrimsV2": None, "WriteSetting": None}),
     "isaacsim.core.nodes": _ids(_ISAAC_CORE, {
         "IsaacArticulationController": None, "IsaacArticulationState": None,
