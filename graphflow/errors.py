@@ -141,17 +141,20 @@ def _on_interrupt(_signal_number: int, _frame: object) -> None:
         raise KeyboardInterrupt
 
 
-_LOADED_WITH_INTERRUPTS_NOTED = ("pxr", "pybullet")
+_LOADED_WITH_INTERRUPTS_NOTED = ("pxr", "pybullet", "networkx")
 
 
 class _DeferWhileLoading:
-    """Import hook of the command: while a ``pxr`` or ``pybullet`` module loads, a Ctrl-C is only noted.
+    """Import hook of the command: while a ``pxr``, ``pybullet`` or ``networkx`` module loads, a Ctrl-C is only noted.
 
     usd-core loads its library modules from C++ (``TfScriptModuleLoader``), which prints a Python
     error with its traceback and carries on: a ``KeyboardInterrupt`` raised there would be a
     traceback on stderr and then lost. PyBullet's C initialisation imports modules of its own: a
     ``KeyboardInterrupt`` raised inside those nested imports leaves an import lock held and the
-    process hangs. Noted instead, it is raised as soon as the import is done.
+    process hangs. networkx's submodules import their partly loaded package, which takes and drops its
+    module lock: a ``KeyboardInterrupt`` raised inside that step left the lock held and the command hung
+    releasing it (found by tests/cli/test_interrupts.py at one event count). Noted instead, it is raised
+    as soon as the import is done.
     """
 
     def find_spec(self, name: str, path: Sequence[str] | None = None, target: object = None) -> ModuleSpec | None:

@@ -153,6 +153,22 @@ class NodeDatabase:
     def log(self, message: str, level: str = "info") -> None:
         self._instance._log(self.node_name, level, str(message))
 
+    # ReadOmniGraphValue: another node's attribute by name, without a connection
+    def node_value(self, node_name: str, attribute: str):
+        """The value *node_name*'s ``inputs:``/``outputs:``/``state:`` *attribute* holds now (as it last computed).
+
+        Raises KeyError with a one-line reason when the graph has no such node or the node no such attribute.
+        """
+        instance = self._instance
+        if node_name not in instance.compiled.index_of:
+            raise KeyError(f"this graph has no node named {node_name!r}")
+        other = instance.database(node_name)
+        group, _, name = attribute.partition(":")
+        bag = {"inputs": other.inputs, "outputs": other.outputs, "state": other.state}.get(group)
+        if bag is None or other.spec.attribute(attribute) is None:
+            raise KeyError(f"node {node_name!r} ({other.spec.id}) has no attribute {attribute!r}")
+        return getattr(bag, name)
+
     def get_variable(self, name: str):
         variables = self._instance.variables
         if name not in variables:

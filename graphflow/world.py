@@ -264,6 +264,28 @@ class World(Protocol):
     def set_prim_active(self, prim_path: str, active: bool) -> None:
         """Take the prim's rigid bodies out of the simulation (False) or back in (True), at rest."""
 
+    # stage edits (stage-21: variant, relationship and material nodes): read the composed stage; edits go to an
+    # anonymous layer under the session layer (never a file), are dropped by reset(), and are refused with a
+    # WorldError naming the prim when they would change what is simulated (graphflow.usd.stage_edits)
+    def variant_sets(self, prim_path: str) -> tuple[str, ...]: ...
+    def variant_names(self, prim_path: str, variant_set: str) -> tuple[str, ...]: ...
+    def variant_selection(self, prim_path: str, variant_set: str) -> str: ...
+    def set_variant_selection(self, prim_path: str, variant_set: str, variant: str) -> None:
+        """Select *variant* ('' blocks the selection: the set's fallback or none)."""
+    def variant_values(self, prim_path: str, variant_set: str, variant: str) -> Mapping[str, Any]:
+        """What the variant authors: ``VariantValue(type_name, value)`` by attribute path."""
+    def variant_bindings(self, prim_path: str, variant_set: str, variant: str) -> Mapping[str, tuple[str, ...]]:
+        """The material-binding relationships the variant authors: targets by relationship path."""
+    def write_stage_values(self, prim_path: str, values: Mapping[str, Any], what: str = "writing values") -> None:
+        """Author plain values on attributes (by path) under the prim."""
+    def clear_stage_values(self, prim_path: str, attribute_paths: Sequence[str],
+                           what: str = "clearing values") -> None: ...
+    def relationship_targets(self, prim_path: str, name: str) -> tuple[str, ...]: ...
+    def set_relationship_targets(self, prim_path: str, name: str, targets: Sequence[str]) -> None: ...
+    def bound_material(self, prim_path: str) -> str:
+        """The material bound directly for all purposes, '' when none."""
+    def bind_material(self, prim_path: str, material_path: str) -> None: ...
+
     # animation (MoveTo*, RotateTo*, TranslateTo*, ScaleToSize): prims placed over several ticks
     def local_transform(self, prim_path: str) -> tuple[Vec3, tuple[float, float, float, float], Vec3]:
         """(translation m, orientation (x, y, z, w), scale) of the prim in its parent prim's frame, as now."""
@@ -331,4 +353,7 @@ class ClockWorld:
     raycast = raycast_batch = contacts = body_of = same_body = _no_physics
     apply_force = gravity_enabled = set_gravity_enabled = set_collision_between = _no_physics
     prim_active = set_prim_active = _no_physics
+    variant_sets = variant_names = variant_selection = set_variant_selection = variant_values = _no_physics
+    variant_bindings = write_stage_values = clear_stage_values = _no_physics
+    relationship_targets = set_relationship_targets = bound_material = bind_material = _no_physics
     local_transform = set_local_transform = _no_physics

@@ -287,6 +287,8 @@ class Graph:
         if entry is None:
             self._refuse(f"no such node (in {text!r})", node=node, attribute=attribute, kind="connection")
         spec = self._spec_of(entry)
+        if spec.attribute(attribute) is None and attribute.count(":") > 1:   # Kit's primvars:st is primvars_st here
+            attribute = group + ":" + attribute.split(":", 1)[1].replace(":", "_")
         if spec.attribute(attribute) is None:
             names = ", ".join(a.name for a in (spec.inputs if group == "inputs" else spec.outputs))
             self._refuse(f"{spec.id} has no {group[:-1]} '{attribute.split(':', 1)[1]}' (it has: {names})",

@@ -36,6 +36,7 @@ from graphflow.usd.animation_layer import AnimationLayer
 from graphflow.usd.description import StageDescription
 from graphflow.usd.errors import warn_unsupported
 from graphflow.usd.prim_bundle import PrimReader
+from graphflow.usd.stage_edits import StageEditing
 from graphflow.world import DEFAULT_TIME_STEP, Contact, RayHit, Services, WorldError
 
 SOLVER_ITERATIONS = 50              # PyBullet's default, stated so it stays fixed
@@ -58,7 +59,7 @@ class _BoundClient(BulletClient):
         return attribute
 
 
-class PyBulletWorld(SceneLookups):
+class PyBulletWorld(SceneLookups, StageEditing):
     """A physics world stepped at a fixed rate; implements ``graphflow.world.World``.
 
     One PyBullet client per world, so several worlds in one process never
@@ -155,6 +156,7 @@ class PyBulletWorld(SceneLookups):
 
     def reset(self) -> None:
         """Rebuild from the parsed stage (bit-exact initial state), then reset attachments and services."""
+        self.discard_stage_edits()
         for path in self.animation_layer.clear():
             self.prim_reader.forget(path)
         self._build()
@@ -198,6 +200,7 @@ class PyBulletWorld(SceneLookups):
             except pybullet.error:
                 pass
             shutil.rmtree(self._mesh_directory, ignore_errors=True)
+            self.discard_stage_edits()      # the stage may outlive the world (a sweep's, the preflight's)
 
     def __enter__(self) -> "PyBulletWorld":
         return self
@@ -398,6 +401,11 @@ class PyBulletWorld(SceneLookups):
     def set_prim_active(self, prim_path: str, active: bool) -> None:
         """Take the prim's free bodies out of the simulation, or back in (``graphflow.physics.activity``)."""
         self.activity.set_active(prim_path, active)
+
+    # stage edits (stage-21): the methods come from StageEditing; an edit drops what was read from the stage
+    def stage_edited(self) -> None:
+        self.prim_reader = PrimReader()
+        self._offsets = {}
 
     # -- animation (MoveTo*, RotateTo*, TranslateTo*, ScaleToSize): prims placed over ticks ------------------
     def local_transform(self, prim_path: str):

@@ -19,6 +19,7 @@ from typing import Any, Hashable, Mapping, Sequence
 
 from graphflow.bundles import Bundle, BundleAttribute, type_of_value
 from graphflow.poses import IDENTITY_QUAT, Pose, Vec3, as_vec3, compose, pose_matrix
+from graphflow.usd.stage_edits import StageEditing
 from graphflow.world import (
     DEFAULT_TIME_STEP,
     RIGID,
@@ -112,7 +113,7 @@ class FakeAttachments:
         self.updates = 0
 
 
-class FakeWorld:
+class FakeWorld(StageEditing):
     """``graphflow.world.World`` without a physics engine (see the module docstring)."""
 
     def __init__(self, time_step: float = DEFAULT_TIME_STEP, *, stage=None,
@@ -176,6 +177,7 @@ class FakeWorld:
         self._pending_forces = []
         self.applied_forces = []
         self.inactive.clear()
+        self.discard_stage_edits()      # stage edits (stage-21): StageEditing's methods, on self.stage
         self.attachments.reset()
         self.services.reset()
 

@@ -15,6 +15,8 @@
 from __future__ import annotations
 
 VARIABLE_PREFIX = "graph:variable:"
+# nodes whose inputs:path may name a node of their graph: imported as that node's (prefixed) name
+NODE_PATH_READERS = ("omni.graph.nodes.ReadOmniGraphValue",)
 VARIABLE_NODES = ("omni.graph.core.ReadVariable", "omni.graph.core.WriteVariable",
                   "omni.graph.action.OnVariableChange")
 
@@ -114,6 +116,8 @@ def prefixed(part: dict, prefix: str) -> dict:
         inputs = node.get("inputs", {})
         if node["type"] in VARIABLE_NODES and inputs.get("variableName") in variables:
             node["inputs"] = {**inputs, "variableName": variables[inputs["variableName"]]}
+        if node["type"] in NODE_PATH_READERS and inputs.get("path") and not str(inputs["path"]).startswith("/"):
+            node["inputs"] = {**inputs, "path": prefix + inputs["path"]}   # the node it names got the prefix too
         nodes.append(node)
     return {
         "nodes": nodes,
@@ -127,7 +131,8 @@ def prefixed(part: dict, prefix: str) -> dict:
 # graph instancing (omni.usd.schema.omnigraph): prims with OmniGraphAPI name graphs in their omniGraphs relationship
 INSTANCE_TOKEN = "_OMNI_GRAPH_TARGET"     # Kit replaces it in prim paths with the instance's target at run time
 INSTANCES_RELATIONSHIP = "omniGraphs"
-GRAPH_TARGET_NODES = ("omni.graph.nodes.GraphTarget", "omni.graph.nodes.GetGraphTargetPrim")
+GRAPH_TARGET_NODES = ("omni.graph.nodes.GraphTarget", "omni.graph.nodes.GetGraphTargetPrim",
+                      "omni.graph.nodes.GetGraphTargetId")
 
 
 def graph_targets(stage, graph_prim, label: str, value_of, warnings: list[str]) -> list[str]:

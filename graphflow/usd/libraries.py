@@ -17,16 +17,9 @@ from graphflow.usd.node_mapping import RENDERING_NODES
 REAL_TIME_FACTOR = ("its one output is simulated time over wall-clock time, which differs from run to run and "
                     "machine to machine; graphflow traces are bit-identical for the same inputs and seed, so a "
                     "wall-clock reading is not carried into a graph")
-PRIM_EDIT = "changes the stage's prims while running, which graphflow's world does not do"
-GRAPH_TARGETS = "a numeric id of the graph target (Kit's internal prim handle); GraphTarget gives its path"
-VARIANTS = ("reads or switches USD variant selections; graphflow composes the stage once, at load, with the "
-            "selections the file authors")
-GEOMETRY = "builds curve or tube geometry for display, which graphflow's world neither renders nor simulates"
-SETTINGS = "reads or writes Kit's settings registry, which a graphflow run does not have"
-SELECTION = "reads the editor's prim selection (no editor headless)"
-MATERIALS = "reads or binds render materials, which only Kit's renderer uses"
-GRAPH_VALUES = "reads any node's attribute by path through Kit's runtime store; graphflow graphs read outputs through connections"
-NOISE = "Kit's reference pages do not state its noise function, so values would not match Kit's"
+NOISE = ("Kit's reference says only 'Perlin noise'; its C++ calls a private copy of pre-release Warp's noise() "
+         "(warp_noise.h, not published), and Warp's 2-4D gradients changed since (a random angle, then a "
+         "normalised unit-square sample), so values would not match Kit's")
 
 _ISAAC_CORE = "isaacsim.core.nodes"
 _ROS2 = "isaacsim.ros2.bridge"
@@ -40,7 +33,7 @@ def _ids(prefix: str, names: dict[str, str | None]) -> dict[str, str | None]:
 
 LIBRARIES: dict[str, dict[str, str | None]] = {
     "omni.graph.action": _ids("omni.graph.action", {
-        "AddPrimRelationship": PRIM_EDIT, "Branch": None, "Countdown": None, "Counter": None, "Delay": None,
+        "AddPrimRelationship": None, "Branch": None, "Countdown": None, "Counter": None, "Delay": None,
         "ExitApplication": None, "FlipFlop": None, "ForEach": None, "ForEachTarget": None, "ForLoop": None,
         "Gate": None, "Multigate": None, "Multisequence": None, "OnClosing": None, "OnCustomEvent": None,
         "OnGamepadInput": None, "OnImpulseEvent": None, "OnKeyboardInput": None, "OnLoaded": None,
@@ -55,12 +48,12 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ArrayFill": None, "ArrayFindValue": None, "ArrayGetSize": None, "ArrayIndex": None, "ArrayInsertValue": None,
         "ArrayLength": None, "ArrayRemoveIndex": None, "ArrayRemoveValue": None, "ArrayReplaceValue": None,
         "ArrayResize": None, "ArrayReverse": None, "ArrayRotate": None, "ArraySetIndex": None, "ArraySlice": None,
-        "Asin": None, "Atan": None, "ATan2": None, "AttributeType": None, "BlendVariants": VARIANTS,
+        "Asin": None, "Atan": None, "ATan2": None, "AttributeType": None, "BlendVariants": None,
         "BooleanAnd": None, "BooleanExpr": None, "BooleanNand": None, "BooleanNor": None, "BooleanNot": None,
         "BooleanOr": None, "BooleanXor": None, "BreakMatrix2": None, "BreakMatrix3": None, "BreakMatrix4": None,
         "BreakVector2": None, "BreakVector3": None, "BreakVector4": None, "BuildString": None,
         "BundleConstructor": None, "BundleInspector": None, "BundleToUSDA": None, "CapitalizeString": None,
-        "Ceil": None, "Clamp": None, "ClearVariantSelection": VARIANTS, "Compare": None, "CompareTargets": None,
+        "Ceil": None, "Clamp": None, "ClearVariantSelection": None, "Compare": None, "CompareTargets": None,
         "ConstantBool": None, "ConstantColor3d": None, "ConstantColor3f": None, "ConstantColor3h": None,
         "ConstantColor4d": None, "ConstantColor4f": None, "ConstantColor4h": None, "ConstantDouble": None,
         "ConstantDouble2": None, "ConstantDouble3": None, "ConstantDouble4": None, "ConstantE": None,
@@ -75,47 +68,47 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "ConstantTexCoord2h": None, "ConstantTexCoord3d": None, "ConstantTexCoord3f": None,
         "ConstantTexCoord3h": None, "ConstantTimecode": None, "ConstantToken": None, "ConstantUChar": None,
         "ConstantUInt": None, "ConstantUInt64": None, "ConstantVector3d": None, "ConstantVector3f": None,
-        "ConstructArray": None, "CopyAttribute": None, "Cos": None, "CreateTubeTopology": GEOMETRY,
-        "CrossProduct": None, "CurveToFrame": GEOMETRY, "CurveTubePositions": GEOMETRY, "CurveTubeST": GEOMETRY,
+        "ConstructArray": None, "CopyAttribute": None, "Cos": None, "CreateTubeTopology": None,
+        "CrossProduct": None, "CurveToFrame": None, "CurveTubePositions": None, "CurveTubeST": None,
         "Distance3D": None, "Divide": None, "DotProduct": None, "EachZero": None, "Ease": None, "EndsWith": None,
         "ExtractAttribute": None, "ExtractBundle": None, "ExtractPrim": None, "FindPrims": None,
-        "Floor": None, "GetAttributeNames": None, "GetGraphTargetId": GRAPH_TARGETS, "GetGraphTargetPrim": None,
-        "GetLocationAtDistanceOnCurve": GEOMETRY, "GetLocationAtDistanceOnCurve2": GEOMETRY,
+        "Floor": None, "GetAttributeNames": None, "GetGraphTargetId": None, "GetGraphTargetPrim": None,
+        "GetLocationAtDistanceOnCurve": None, "GetLocationAtDistanceOnCurve2": None,
         "GetMatrix4Quaternion": None, "GetMatrix4Rotation": None, "GetMatrix4RotationMatrix": None,
         "GetMatrix4Scale": None, "GetMatrix4Translation": None, "GetParentPath": None, "GetParentPrims": None,
         "GetPrimDirectionVector": None, "GetPrimLocalToWorldTransform": None, "GetPrimPath": None,
         "GetPrimPaths": None, "GetPrimRelationship": None, "GetPrims": None, "GetPrimsAtPath": None,
         "GetString": None, "GetStringLength": None, "GetTargets": None, "GetTargetsSize": None,
-        "GetTimeline": None, "GetVariantNames": VARIANTS, "GetVariantSelection": VARIANTS,
-        "GetVariantSetNames": VARIANTS, "GpuInteropCudaEntry": None, "GpuInteropRenderProductEntry": None,
-        "GraphTarget": None, "HasAttribute": None, "HasVariantSet": VARIANTS, "Increment": None,
+        "GetTimeline": None, "GetVariantNames": None, "GetVariantSelection": None,
+        "GetVariantSetNames": None, "GpuInteropCudaEntry": None, "GpuInteropRenderProductEntry": None,
+        "GraphTarget": None, "HasAttribute": None, "HasVariantSet": None, "Increment": None,
         "InsertAttribute": None, "InsertString": None, "InsertTargets": None, "Interpolator": None,
-        "IsPrimActive": None, "IsPrimSelected": SELECTION, "IsZero": None, "JoinString": None,
-        "LengthAlongCurve": GEOMETRY, "LoopTimeline": None, "Magnitude": None,
-        "MakeArray": "Kit's older Python array maker, replaced by ConstructArray; not carried over",
+        "IsPrimActive": None, "IsPrimSelected": None, "IsZero": None, "JoinString": None,
+        "LengthAlongCurve": None, "LoopTimeline": None, "Magnitude": None,
+        "MakeArray": None,
         "MakeMatrix2": None, "MakeMatrix3": None, "MakeMatrix4": None, "MakeTransform": None,
         "MakeTransformLookAt": None, "MakeVector2": None, "MakeVector3": None, "MakeVector4": None,
         "MatrixMultiply": None, "Maximum": None, "Minimum": None, "Modulo": None, "MoveToTarget": None,
         "MoveToTransform": None, "Multiply": None, "Negate": None, "Noise": NOISE, "Normalize": None,
         "NthRoot": None, "RandomBoolean": None, "RandomGaussian": None, "RandomUnitQuaternion": None,
         "RandomUnitVector": None, "ReadGamepadState": None, "ReadKeyboardState": None, "ReadMouseState": None,
-        "ReadOmniGraphValue": GRAPH_VALUES, "ReadPrim": None, "ReadPrimAttribute": None,
+        "ReadOmniGraphValue": None, "ReadPrim": None, "ReadPrimAttribute": None,
         "ReadPrimAttributes": None, "ReadPrimBundle": None, "ReadPrimLocalTransform": None,
-        "ReadPrimMaterial": MATERIALS, "ReadPrimRelationship": None, "ReadPrims": None, "ReadPrimsBundle": None,
-        "ReadPrimsV2": None, "ReadSetting": SETTINGS, "ReadTime": None, "RemoveAttribute": None,
+        "ReadPrimMaterial": None, "ReadPrimRelationship": None, "ReadPrims": None, "ReadPrimsBundle": None,
+        "ReadPrimsV2": None, "ReadSetting": None, "ReadTime": None, "RemoveAttribute": None,
         "RenameAttribute": None, "ReplaceString": None, "ReplaceTargetName": None, "ReplaceTargets": None,
         "RotateToOrientation": None, "RotateToTarget": None, "RotateVector": None, "Round": None,
         "RpResourceExampleHydra": None, "ScaleToSize": None, "SelectIf": None, "SelectTargetIf": None,
         "SetMatrix4Quaternion": None, "SetMatrix4Rotation": None, "SetMatrix4Scale": None,
-        "SetMatrix4Translation": None, "SetTarget": None, "SetTimeline": None, "SetVariantSelection": VARIANTS,
-        "Sin": None, "SourceIndices": GEOMETRY, "StartsWith": None, "StartTimeline": None,
+        "SetMatrix4Translation": None, "SetTarget": None, "SetTimeline": None, "SetVariantSelection": None,
+        "Sin": None, "SourceIndices": None, "StartsWith": None, "StartTimeline": None,
         "StopTimeline": None, "Subtract": None, "Tan": None, "Timer": None, "ToBool": None, "ToDeg": None,
         "ToDouble": None, "ToFloat": None, "ToHalf": None, "ToInt": None, "ToInt64": None, "ToRad": None,
         "ToString": None, "ToTarget": None, "ToToken": None, "ToUchar": None, "ToUint": None, "ToUint64": None,
         "TransformVector": None, "TranslateToLocation": None, "TranslateToTarget": None, "Transpose": None,
         "Trig": None, "WritePrim": None, "WritePrimAttribute": None, "WritePrimLocalTransform": None,
-        "WritePrimMaterial": MATERIALS, "WritePrimRelationship": PRIM_EDIT, "WritePrims": None,
-        "WritePrimsV2": None, "WriteSetting": SETTINGS}),
+        "WritePrimMaterial": None, "WritePrimRelationship": None, "WritePrims": None,
+        "WritePrimsV2": None, "WriteSetting": None}),
     "isaacsim.core.nodes": _ids(_ISAAC_CORE, {
         "IsaacArticulationController": None, "IsaacArticulationState": None,
         "IsaacAttachHydraTexture": None, "IsaacComputeOdometry": None, "IsaacComputeTransformTree": None,

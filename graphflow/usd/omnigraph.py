@@ -30,6 +30,7 @@ from graphflow.registry import Registry, default_registry
 from graphflow.usd.bundle_ports import DYNAMIC_INPUTS, expand, input_sources
 from graphflow.usd.graph_parts import (
     INSTANCE_TOKEN,
+    NODE_PATH_READERS,
     PORT_CHANGES,
     bind_target,
     graph_prefixes,
@@ -190,6 +191,8 @@ def _import_one(stage, graph_prim, label: str, registry: Registry, skip_unknown:
         inputs = _mapped_inputs(prim, node_type, label, warnings, problems, renames)
         inputs = upgraded_values(type_id, authored_version, era_inputs(era, inputs) if era else inputs,
                                  f"{label}: node '{name}'", warnings)
+        if node_type.spec.id in NODE_PATH_READERS and str(inputs.get("path", "")).startswith(graph_path + "/"):
+            inputs["path"] = inputs["path"][len(graph_path) + 1:]   # a node of this graph: by its name
         if legacy_gripper and any(prim.GetAttribute(pin).GetConnections() for pin in LEGACY_GRIPPER_COMMANDS):
             command, link = legacy_gripper_command_node(name, f"{label}: node '{name}'", warnings)
             nodes.append(command)
@@ -349,6 +352,8 @@ def _connections(node_prims, graph_path, kept: dict, label: str, warnings: list[
                     # Kit lets constants be read from their input; graphflow's constants expose it as an output
                     source_name = "outputs:" + source_name.split(":", 1)[1]
                 source_name = renames.get((source_node.name, source_name), f"{source_node.name}.{source_name}")
+                if source_name and _missing_port(kept, source_name) and not _missing_port(kept, _underscored(source_name)):
+                    source_name = _underscored(source_name)   # Kit's outputs:primvars:st is primvars_st here
                 if source_name and kept[source_node.name].spec.id in GENERIC_SUBSCRIBERS and \
                         _missing_port(kept, source_name):
                     source_name = message_field(source_node.name, source.name, kept, registry, nodes, connections,
@@ -360,6 +365,12 @@ def _connections(node_prims, graph_path, kept: dict, label: str, warnings: list[
                     continue
                 connections.append({"src": source_name, "dst": destination})
     return connections
+
+
+def _underscored(endpoint: str) -> str:
+    """``node.outputs:primvars:st`` as ``node.outputs:primvars_st``: a Kit port name with colons, as its node declares it."""
+    node, group, name = endpoint.split(".", 1)[0], *endpoint.split(".", 1)[1].split(":", 1)
+    return f"{node}.{group}:{name.replace(':', '_')}"
 
 
 def _missing_port(kept: dict, endpoint: str | None) -> str | None:

@@ -26,6 +26,7 @@ from graphflow.document import GraphDocument, Problem
 from graphflow.registry import Registry, default_registry
 
 SURFACE_GRIPPER, ARTICULATION, RIGID_BODY, ANY_PRIM = "surface gripper", "articulation", "rigid body", "prim"
+PRIM_OR_PROPERTY = "prim or property"      # a relationship target may be an attribute or another relationship
 # (node type id, input) -> the kind of prim the input must name
 PRIM_KINDS = {
     ("isaacsim.robot.surface_gripper.SurfaceGripper", "SurfaceGripper"): SURFACE_GRIPPER,
@@ -38,6 +39,7 @@ PRIM_KINDS = {
     ("isaacsim.core.nodes.IsaacArticulationController", "robotPath"): ARTICULATION,
     ("graphflow.ReadJointState", "prim"): ARTICULATION,
     ("graphflow.LegacySurfaceGripper", "endEffectorPrim"): RIGID_BODY,
+    ("omni.graph.action.AddPrimRelationship", "target"): PRIM_OR_PROPERTY,
 }
 # Target inputs Kit declares and ignores (ReadVariable/WriteVariable v2 "inputs:graph"): never checked on the stage
 IGNORED_TARGETS = {("omni.graph.core.ReadVariable", "graph"), ("omni.graph.core.WriteVariable", "graph")}
@@ -128,6 +130,8 @@ class _Stage:
 
     def kind_problem(self, path: str, kind: str) -> str | None:
         """Why *path* is not a prim of *kind* (None when it is)."""
+        if kind == PRIM_OR_PROPERTY and path.startswith("/") and self.usd.GetObjectAtPath(path):
+            return None
         prim = self.prim(path)
         if prim is None:
             close = difflib.get_close_matches(path, [str(p.GetPath()) for p in self.usd.Traverse()], n=1)

@@ -54,6 +54,7 @@ STAGE_INPUTS = {
     "omni.graph.nodes.ReadPrimLocalTransform": {"prim": CUBE},
     "omni.graph.nodes.WritePrimLocalTransform": {"prim": CUBE},
     "omni.graph.nodes.IsPrimActive": {"primTarget": CUBE},
+    "omni.graph.nodes.IsPrimSelected": {"prim": CUBE},
     "omni.graph.action.SetPrimActive": {"primTarget": CUBE},
     "omni.graph.action.OnObjectChange": {"prim": CUBE, "name": "physics:mass"},
     "isaacsim.core.nodes.IsaacJointNameResolver": {"robotPath": UR10, "jointNames": ["elbow_joint"]},
@@ -65,6 +66,12 @@ STAGE_INPUTS = {
     "omni.graph.nodes.ReadPrimBundle": {"prim": [CUBE]},
     "omni.graph.nodes.ReadPrimsBundle": {"prims": [CUBE]},
     "omni.graph.nodes.ReadPrimAttributes": {"prim": CUBE},
+    # stage edits (stage-21)
+    "omni.graph.action.AddPrimRelationship": {"path": CUBE, "name": "custom:tags", "target": UR10},
+    "omni.graph.nodes.WritePrimRelationship": {"prim": CUBE, "name": "custom:tags", "value": [UR10]},
+    "omni.graph.nodes.ReadPrimMaterial": {"prim": CUBE},
+    "omni.graph.nodes.GetVariantSetNames": {"prim": CUBE},
+    "omni.graph.nodes.HasVariantSet": {"prim": CUBE, "variantSetName": "look"},
     "omni.graph.nodes.TranslateToLocation": {"prim": CUBE, "target": [0.6, 0.0, 0.3]},
     "omni.graph.nodes.RotateToOrientation": {"prim": CUBE, "target": [0.0, 0.0, 90.0]},
     "omni.graph.nodes.ScaleToSize": {"prim": CUBE, "target": [1.0, 1.0, 1.0]},
@@ -76,7 +83,12 @@ STAGE_INPUTS = {
 
 # types whose prim the packaged stage lacks: on it they must refuse clearly, naming the prim
 OWN_PRIM = {"isaacsim.sensors.physics.IsaacReadRaycastSensor": ({"raycastSensorPrim": CUBE}, "rayOrigins"),
-            "isaacsim.robot.wheeled_robots.HolonomicRobotUsdSetup": ({"robotPrim": UR10}, "isaacmecanumwheel:angle")}
+            "isaacsim.robot.wheeled_robots.HolonomicRobotUsdSetup": ({"robotPrim": UR10}, "isaacmecanumwheel:angle"),
+            # stage edits (stage-21): the packaged stage has no variant sets and no materials
+            "omni.graph.nodes.WritePrimMaterial": ({"prim": CUBE, "materialPath": "/World/Looks/Red"}, "/World/Looks/Red"),
+            **{f"omni.graph.nodes.{name}": ({"prim": CUBE, "variantSetName": "look"}, "no variant set 'look'")
+               for name in ("GetVariantNames", "GetVariantSelection", "SetVariantSelection", "ClearVariantSelection",
+                            "BlendVariants")}}
 
 TYPES = default_registry().types()
 # constants holding paths and path conversions pass them on without reading the scene

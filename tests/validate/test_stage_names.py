@@ -146,3 +146,17 @@ def test_kits_ignored_variable_graph_input_is_not_checked_on_the_stage(tmp_path)
         graph["nodes"].append({"name": "read_speed", "type": "omni.graph.core.ReadVariable",
                                "inputs": {"variableName": "speed", "graph": ["/World/ConveyorGraph"]}})
     assert _problems(_variant(tmp_path, edit))[0] == []
+
+
+def test_a_relationship_target_may_be_a_property_but_must_exist(tmp_path):
+    """AddPrimRelationship's target may name a prim, an attribute or a relationship (Kit's reference)."""
+    def edit(graph, target):
+        graph["nodes"].append({"name": "tag", "type": "omni.graph.action.AddPrimRelationship",
+                               "inputs": {"path": "/World/Cube", "name": "custom:tags", "target": target}})
+        graph["connections"].append({"src": "on_tick.outputs:tick", "dst": "tag.inputs:execIn"})
+
+    for good in ("/World/Cube.physics:mass", "/World/ur10/root_joint.physics:body1", "/World/ur10"):
+        errors, _ = _problems(_variant(tmp_path, lambda g: edit(g, good)))
+        assert errors == [], good
+    errors, _ = _problems(_variant(tmp_path, lambda g: edit(g, "/World/Cube.nothing")))
+    assert [e.split(": ", 2)[2] for e in errors] == ["no prim /World/Cube.nothing on the stage (did you mean /World/Cube?)"]
