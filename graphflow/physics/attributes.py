@@ -12,6 +12,7 @@ import math
 from typing import Any, Callable, NamedTuple
 
 from graphflow.poses import compose, invert, quat_rotate, relative
+from graphflow.usd.stage_edits import plain
 from graphflow.world import WorldError
 
 _DEGREES = 180.0 / math.pi
@@ -238,18 +239,6 @@ def _get_usd_attribute(world, prim_path: str, name: str):
         if prim:
             attribute = prim.GetAttribute(name)
             if attribute and attribute.HasValue():
-                return _plain(attribute.Get())
+                return plain(attribute.Get())
             raise WorldError(f"{prim_path} has no attribute {name}")
     raise WorldError(f"no prim {prim_path} on this stage")
-
-
-def _plain(value):
-    """USD values as plain Python: Gf vectors and arrays -> tuples, quaternions -> (x, y, z, w)."""
-    if hasattr(value, "GetImaginary") and hasattr(value, "GetReal"):
-        imaginary = value.GetImaginary()
-        return (float(imaginary[0]), float(imaginary[1]), float(imaginary[2]), float(value.GetReal()))
-    if isinstance(value, (bool, int, float, str)):
-        return value
-    if hasattr(value, "__len__") and not isinstance(value, str):
-        return tuple(_plain(v) for v in value)
-    return str(value) if value is not None else None
