@@ -17,9 +17,6 @@ from graphflow.usd.node_mapping import RENDERING_NODES
 REAL_TIME_FACTOR = ("its one output is simulated time over wall-clock time, which differs from run to run and "
                     "machine to machine; graphflow traces are bit-identical for the same inputs and seed, so a "
                     "wall-clock reading is not carried into a graph")
-NOISE = ("Kit's reference says only 'Perlin noise'; its C++ calls a private copy of pre-release Warp's noise() "
-         "(warp_noise.h, not published), and Warp's 2-4D gradients changed since (a random angle, then a "
-         "normalised unit-square sample), so values would not match Kit's")
 
 _ISAAC_CORE = "isaacsim.core.nodes"
 _ROS2 = "isaacsim.ros2.bridge"
@@ -89,7 +86,7 @@ LIBRARIES: dict[str, dict[str, str | None]] = {
         "MakeMatrix2": None, "MakeMatrix3": None, "MakeMatrix4": None, "MakeTransform": None,
         "MakeTransformLookAt": None, "MakeVector2": None, "MakeVector3": None, "MakeVector4": None,
         "MatrixMultiply": None, "Maximum": None, "Minimum": None, "Modulo": None, "MoveToTarget": None,
-        "MoveToTransform": None, "Multiply": None, "Negate": None, "Noise": NOISE, "Normalize": None,
+        "MoveToTransform": None, "Multiply": None, "Negate": None, "Noise": None, "Normalize": None,
         "NthRoot": None, "RandomBoolean": None, "RandomGaussian": None, "RandomUnitQuaternion": None,
         "RandomUnitVector": None, "ReadGamepadState": None, "ReadKeyboardState": None, "ReadMouseState": None,
         "ReadOmniGraphValue": None, "ReadPrim": None, "ReadPrimAttribute": None,
