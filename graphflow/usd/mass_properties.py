@@ -77,6 +77,8 @@ class MassPropertiesMixin:
             self._unsupported(str(prim.GetPath()), "a rigid body without mass or colliders (a frame or a site): "
                               f"given {FRAME_BODY_MASS * 1000:g} g, a 1 cm sphere's inertia")
             mass, diagonal = FRAME_BODY_MASS, (FRAME_BODY_INERTIA,) * 3
+            # a sphere's inertia has no preferred axes; usd-core's are uninitialised here (no collider)
+            principal_axes = (0.0, 0.0, 0.0, 1.0)
         elif not any(shape.collision_enabled for shape in body.shapes) and not (
                 prim.HasAPI(UsdPhysics.MassAPI) and mass_api.GetDiagonalInertiaAttr().HasAuthoredValue()):
             # usd-core found no collider to integrate: it warns "possibly invalid inertia tensor of

@@ -313,6 +313,26 @@ def test_a_joint_whose_body_is_missing_names_file_and_prims(tmp_path):
         create_world(path)
 
 
+def test_a_frame_body_without_mass_or_colliders_gets_a_small_spheres_inertia_on_identity_axes():
+    """A site (RigidBodyAPI only): usd-core returns a negative mass and leaves the principal axes uninitialised
+    (values like (1.2e29, 4.6e-41, 1.0e9, ...), different from call to call), which once diverged a UR5e carrying
+    such a site at its first step. A 1 g sphere's inertia is the same about every axis: identity axes."""
+    stage = make_stage()
+    sites = []
+    for index in range(20):        # many frames: each call leaves different garbage behind it
+        site = UsdGeom.Xform.Define(stage, f"/World/Site{index}")
+        UsdPhysics.RigidBodyAPI.Apply(site.GetPrim())
+        sites.append(f"/World/Site{index}")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UnsupportedPrimWarning)
+        bodies = load_description(stage).bodies
+    for path in sites:
+        properties = bodies[path].mass
+        assert properties.mass == pytest.approx(0.001)
+        assert properties.diagonal_inertia == pytest.approx((0.4 * 0.001 * 0.01 ** 2,) * 3)
+        assert properties.principal_axes == (0.0, 0.0, 0.0, 1.0)
+
+
 def test_a_body_without_enabled_colliders_gets_its_geometry_inertia():
     """usd-core warns "possibly invalid inertia tensor of {1,1,1}" for these, uses a small sphere and leaves
     the principal axes uninitialised (different in every process: the krabby's femurs and tibias)."""
