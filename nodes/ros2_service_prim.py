@@ -9,10 +9,11 @@ newest request not yet answered; execOut fires when one did.
 
 Reads and writes go through the world, so a read gives the simulated value
 (a body's pose, a joint's drive target) and a write acts on the simulation;
-the writable attributes are the world's (xformOp:translate / orient of a free
-body, physics:mass, velocities, drive targets). Writing any other attribute,
-which Isaac authors on the stage, is answered success false with the reason:
-graphflow composes the stage once, at load. Quaternions travel as Isaac's
+what the world simulates (xformOp:translate / orient of a free body,
+physics:mass, velocities, drive targets) is written to the simulation, any other
+attribute to the run's stage-edit layer; a write that would change what is
+simulated (a collider's size) is answered success false with the reason:
+graphflow composes physics once, at load. Quaternions travel as Isaac's
 JSON, [w, x, y, z]. A failed request is an answer (success false, message),
 never a run failure, as in Isaac.
 """
@@ -33,8 +34,9 @@ SPEC = NodeSpec(
     description=(
         "On execIn, answers the newest request to each of Isaac's prim services (GetPrims, GetPrimAttributes, "
         "GetPrimAttribute, SetPrimAttribute; isaac_ros2_messages) from the world: listings from the stage, "
-        "attribute values as JSON (quaternions [w, x, y, z]) from the simulation; writes only the world's "
-        "writable attributes, others answered success false. execOut fires when a request was answered."),
+        "attribute values as JSON (quaternions [w, x, y, z]) from the simulation; writes simulated attributes "
+        "to the simulation and others to the run's stage-edit layer, a write that would change what is simulated "
+        "answered success false. execOut fires when a request was answered."),
     categories=("isaacRos2:service",),
     ui_name="ROS2 Service Prim",
     inputs=(

@@ -193,7 +193,6 @@ ATTRIBUTES: dict[str, AttributeAccess] = {
     "physics:angularVelocity": AttributeAccess(
         "RW body angular velocity in its parent prim's frame, degrees/s (as USD)", _get_velocity, _set_velocity),
 }
-WRITABLE = tuple(name for name, access in ATTRIBUTES.items() if access.set is not None)
 
 
 def get_attribute(world, prim_path: str, name: str):
@@ -204,12 +203,19 @@ def get_attribute(world, prim_path: str, name: str):
 
 
 def set_attribute(world, prim_path: str, name: str, value) -> None:
+    """What physics simulates goes to the simulation (``ATTRIBUTES``); any other attribute the stage has (a
+    custom one, a light's, a plain prim's xform op) is written to the run's stage-edit layer, which refuses
+    a value that would change what is simulated (a collider's size): physics is composed once, at load."""
     access = ATTRIBUTES.get(name)
-    if access is None:
-        raise WorldError(f"{prim_path}: attribute {name} cannot be written (writable: " + ", ".join(WRITABLE) + ")")
+    if access is None or (name in _XFORM_OPS and world.body_of(prim_path) is None):
+        world.write_stage_values(prim_path, {f"{prim_path}.{name}": value}, what=f"writing {name}")
+        return
     if access.set is None:
         raise WorldError(f"{prim_path}: attribute {name} is read-only")
     access.set(world, prim_path, name, value)
+
+
+_XFORM_OPS = ("xformOp:translate", "xformOp:orient")   # a body's are simulated; a plain prim's are the stage's
 
 
 def read_prim(world, prim_path: str, bounding_box: bool = False, time: float | None = None):

@@ -217,7 +217,7 @@ def test_backend_internal_lookups_round_trip():
     (lambda w: w.prim_pose("/World/Nothing"), "/World/Nothing"),
     (lambda w: w.joint_names("/World/Cube"), "/World/Cube is not part of an articulation"),
     (lambda w: w.get_attribute("/World/Cube", "physics:bogus"), "/World/Cube has no attribute physics:bogus"),
-    (lambda w: w.set_attribute("/World/Cube", "physics:bogus", 1), "/World/Cube: attribute physics:bogus cannot"),
+    (lambda w: w.set_attribute("/World/Cube", "physics:bogus", 1), "/World/Cube: no attribute /World/Cube.physics:bogus on this stage"),
     (lambda w: w.set_attribute("/World/ur10/upper_arm_link/elbow_joint", "physics:lowerLimit", 0), "read-only"),
     (lambda w: w.set_joint_targets("/World/ur10", [7], positions=[0.0]), "joint index 7 out of range"),
 ])
