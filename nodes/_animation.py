@@ -139,8 +139,14 @@ def euler_xyz_quaternion(degrees) -> tuple[float, float, float, float]:
                            cx * cy * sz - sx * sy * cz, cx * cy * cz + sx * sy * sz))
 
 
-def world_goal(db, source: str, target: str):
-    """The target prim's world pose as a local pose of the source (in the source's parent frame)."""
+def source_prim(db) -> str:
+    """The *ToTarget nodes' prim to move (sourcePrim, or sourcePrimPath when useSourcePath)."""
+    return prim_path(db, "sourcePrim", "sourcePrimPath", "useSourcePath")
+
+
+def target_goal(db):
+    """(target prim, its world pose as a local pose of the source prim: in the source's parent frame)."""
+    source, target = source_prim(db), prim_path(db, "targetPrim", "targetPrimPath", "useTargetPath")
     parent = source.rsplit("/", 1)[0]
     parent_pose = IDENTITY_POSE
     if parent:
@@ -148,4 +154,4 @@ def world_goal(db, source: str, target: str):
             parent_pose = db.world.prim_pose(parent)
         except WorldError:
             pass
-    return relative(parent_pose, db.world.prim_pose(target))
+    return target, relative(parent_pose, db.world.prim_pose(target))

@@ -15,9 +15,9 @@ from graphflow_nodes._animation import (
     TARGET_PRIM_PATH,
     USE_SOURCE_PATH,
     USE_TARGET_PATH,
-    prim_path,
     run_maneuver,
-    world_goal,
+    source_prim,
+    target_goal,
 )
 
 SPEC = NodeSpec(
@@ -49,16 +49,10 @@ SPEC = NodeSpec(
 )
 
 
-def _source(db) -> str:
-    return prim_path(db, "sourcePrim", "sourcePrimPath", "useSourcePath")
-
-
 def _goal(db, start):
-    source = _source(db)
-    target = prim_path(db, "targetPrim", "targetPrimPath", "useTargetPath")
-    position, orientation = world_goal(db, source, target)
+    target, (position, orientation) = target_goal(db)
     return position, orientation, db.world.local_transform(target)[2]
 
 
 def compute(db):
-    run_maneuver(db, _source, _goal)
+    run_maneuver(db, source_prim, _goal)
