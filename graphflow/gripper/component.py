@@ -25,6 +25,9 @@ REASON_POINTS_LISTED = 3     # attachment points named in a close-failure reason
 SETTLING = "settling"        # a close-failure note: the point did not cast, it was settling after its last grip
 
 
+STATUS_TOKENS = ("Open", "Closing", "Closed")   # GripperStatus by value: the status's token (a recorder's lookup)
+
+
 class GripperStatus(IntEnum):
     """Isaac's enum order: Open=0, Closing=1, Closed=2 (the C++ and binding order, not the online doc)."""
 
@@ -34,7 +37,7 @@ class GripperStatus(IntEnum):
 
     @property
     def token(self) -> str:
-        return ("Open", "Closing", "Closed")[self]
+        return STATUS_TOKENS[self]
 
     @classmethod
     def from_token(cls, token: str | None) -> "GripperStatus":

@@ -18,10 +18,10 @@ from graphflow.observe.trace import (
     TRACE_VERSION,
     GripperSample,
     dumps_record,
+    gripper_fields,
     loaded_versions,
     phase_outputs,
     same_path_text,
-    sample_grippers,
     surface_gripper_manager,
     to_json_value,
     used_grippers,
@@ -52,12 +52,13 @@ class TraceRecorder:
         self.records = records
         self.deferred = deferred and stream is None
         self.instance = simulation.instance
-        self._pulse_names: dict[tuple, str] = {}   # (node index, exec output, state) -> its pulse text
         self._captured: list = []                  # ticks captured but not yet encoded, flat (see _capture)
         self._pending = 0                          # how many ticks _captured holds
         self._grippers: dict[str, Any] = {}        # each gripper's sample as last encoded
         self._manager = None                       # the world's gripper manager, once a node has made it
+        self._statuses: dict[str, str] = {}        # each gripper's status token as last captured
         nodes = self.instance.compiled.nodes
+        self._pulse_texts = _PulseTexts(node.name for node in nodes)   # (node index, output, state) -> text
         self._node_names = [node.name for node in nodes]
         databases = [self.instance.database(node.name) for node in nodes]
         exec_names = [frozenset(a.name for a in node.spec.exec_outputs) for node in nodes]
@@ -79,12 +80,6 @@ class TraceRecorder:
 
     reads_pulses = True   # the instance logs each tick's exec pulses for _capture (GraphInstance.pulse_log)
 
-    def _pulse_text(self, pulse: tuple) -> str:
-        """``node.output`` with the state's suffix (``:push``, ...), made once per (node, output, state)."""
-        index, name, state = pulse
-        text = self._pulse_names[pulse] = f"{self._node_names[index]}.{name}{_STATE_SUFFIX[ExecState(state)]}"
-        return text
-
     def on_tick(self, simulation, tick: int) -> None:
         """Capture the tick that just ran; write its record now when there is a stream."""
         self._capture()
@@ -104,20 +99,19 @@ class TraceRecorder:
 
         One flat list of plain values (the order ``_encode`` reads them in), not objects per tick: the
         garbage collector does not track floats and strings, so a long run's captures do not make its
-        collections more frequent or slower."""
+        collections more frequent or slower (containers are made only where there is no other way: the
+        sampled poses, read now and composed when encoded, are an array and the function composing them)."""
         instance, world, flat = self.instance, self.simulation.world, self._captured
         pulses = instance.pulse_log or ()
         flat += (instance.tick_count, world.time, len(pulses))
-        if pulses:
-            texts, text_of = self._pulse_names, self._pulse_text
-            flat += [texts.get(pulse) or text_of(pulse) for pulse in pulses]
+        flat += map(self._pulse_texts.__getitem__, pulses)
         values = [outputs[name] for outputs, name in self._sources]
         immutable = self._immutable
         for index in compress(self._slot_indices, map(is_not, values, immutable)):   # a new object in the slot
             value = values[index]
             kind = type(value)
-            if kind in _SCALARS or (kind is tuple and _scalar_items(value)):
-                immutable[index] = value
+            if kind in _SCALAR_TYPES or (kind is tuple and set(map(type, value)) <= _SCALAR_TYPES):
+                immutable[index] = value   # immutable: capturing the reference captures the value
             else:
                 values[index] = to_json_value(value)   # a list or array a node may change in place: a copy
         flat += values
@@ -135,12 +129,22 @@ class TraceRecorder:
         manager = self._manager
         if manager is None:
             manager = self._manager = surface_gripper_manager(world)
-        samples = sample_grippers(world, manager) if manager is not None else {}
-        flat.append(len(samples))
-        for path, sample in samples.items():
-            flat.append(path)
-            flat += sample
-        self._scene.capture(manager, samples, flat)
+        closing = None   # grippers whose close began this tick: the scene records their rays
+        if manager is None:
+            flat.append(0)
+        else:
+            components, statuses = manager.components, self._statuses
+            flat.append(len(components))
+            for path in sorted(components):
+                component = components[path]
+                fields = gripper_fields(world, component)
+                flat.append(path)
+                flat += fields
+                if fields[0] != statuses.get(path, "Open"):
+                    if statuses.get(path, "Open") == "Open":
+                        closing = [*(closing or ()), component]
+                    statuses[path] = fields[0]
+        self._scene.capture(closing, flat)
         self._pending += 1
 
     def _encode(self, items: Iterator) -> dict:
@@ -228,14 +232,22 @@ class TraceRecorder:
         self._emit(header)
 
 
+class _PulseTexts(dict):
+    """(node index, exec output, state) -> ``node.output`` with the state's suffix (``:push``, ...), each made once."""
+
+    def __init__(self, node_names):
+        super().__init__()
+        self.node_names = list(node_names)
+
+    def __missing__(self, pulse: tuple) -> str:
+        index, name, state = pulse
+        text = self[pulse] = f"{self.node_names[index]}.{name}{_STATE_SUFFIX[ExecState(state)]}"
+        return text
+
+
 _MISSING = object()
 _SCALARS = (float, int, str, bool, type(None))
 _SCALAR_TYPES = frozenset(_SCALARS)
-
-
-def _scalar_items(value: tuple) -> bool:
-    """A tuple of scalars only: immutable, so capturing the reference captures the value."""
-    return set(map(type, value)) <= _SCALAR_TYPES
 
 
 def _unchanged(kind: type, previous: Any, raw: Any) -> bool:

@@ -22,6 +22,7 @@ from typing import Any, Iterator, NamedTuple
 from graphflow import __version__
 from graphflow.bundles import Bundle
 from graphflow.errors import BadInput
+from graphflow.gripper.component import STATUS_TOKENS
 
 TRACE_FORMAT = "graphflow-trace"
 TRACE_VERSION = 2            # 2 added the scene section (graphflow.observe.trace_scene); 1 is still read
@@ -109,18 +110,17 @@ def sample_grippers(world, manager=None) -> dict[str, GripperSample]:
         manager = surface_gripper_manager(world)
     if manager is None:
         return {}
-    samples = {}
     components = getattr(manager, "components", {})
-    for path in sorted(components):
-        component = components[path]
-        gripped = tuple(component.gripped_objects()) if component.handles else ()
-        samples[path] = GripperSample(
-            status=component.status.token,
-            gripped=gripped,
-            force=_holding_force(component) if gripped else None,
-            held_z=float(world.prim_pose(gripped[0])[0][2]) if gripped else None,
-            reason=component.reason)
-    return samples
+    return {path: GripperSample(*gripper_fields(world, components[path])) for path in sorted(components)}
+
+
+def gripper_fields(world, component) -> tuple:
+    """One gripper's sample in ``GripperSample``'s field order (the recorder keeps them flat)."""
+    status, reason = STATUS_TOKENS[component.status], component.reason
+    gripped = tuple(component.gripped_objects()) if component.handles else ()
+    if not gripped:
+        return status, (), None, None, reason
+    return status, gripped, _holding_force(component), float(world.prim_pose(gripped[0])[0][2]), reason
 
 
 def used_grippers(simulation) -> list[str]:

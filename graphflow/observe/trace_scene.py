@@ -11,7 +11,7 @@ description; nothing is timed, so the section is as deterministic as the rest.
 """
 from __future__ import annotations
 
-from itertools import islice
+from array import array
 from typing import Any, Iterator
 
 from graphflow.poses import AXIS_VECTORS, quat_rotate
@@ -65,7 +65,6 @@ class SceneSection:
         self.moving = [path for path, body in self.bodies.items() if body.kind != "static"]
         self._poses: dict[str, list[float]] = {}
         self._counts = list(self.instance.compute_counts)
-        self._gripper_status: dict[str, str] = {}
 
     def header(self) -> dict:
         """``scene``: up axis, pose rate, each body's kind, pose and shapes (description order), articulation links."""
@@ -81,21 +80,21 @@ class SceneSection:
         links = sorted({path for articulation in description.articulations for path in articulation.bodies})
         return {"scene": {"upAxis": description.up_axis, "poseEvery": self.pose_every, "bodies": bodies, "links": links}}
 
-    def capture(self, manager, samples: dict, flat: list) -> None:
-        """Append what ``encode`` needs of this tick to *flat*, read now: compute counts, whether poses were
-        the sampled poses (read now, composed when encoded), the rays of closes that began (or None). *samples*: the
-        tick's gripper samples (``graphflow.observe.trace.sample_grippers``), whose statuses say which began."""
-        flat += self.instance.compute_counts
+    def capture(self, closing: list | None, flat: list) -> None:
+        """Append what ``encode`` needs of this tick to *flat*, read now: compute counts, the sampled poses
+        (read now, composed when encoded) or None, the rays of the surface grippers in *closing* (those whose
+        close began this tick; None for none) or None."""
+        flat.append(array("q", self.instance.compute_counts))   # machine integers: nothing for the collector
         if self.moving and self.instance.tick_count % self.pose_every == 0:
             flat.append(self.world.read_body_poses(self.moving))   # composed when encoded
         else:
             flat.append(None)
-        flat.append(self._rays_on_close(manager, samples) if manager is not None else None)
+        flat.append(self._rays(closing) if closing else None)
 
     def encode(self, items: Iterator) -> dict:
         """A tick's ``computed`` nodes, sampled ``poses`` that changed and ``rays``, read from its capture by *items*."""
         record: dict[str, Any] = {}
-        counts = list(islice(items, len(self._counts)))
+        counts = next(items)
         computed = [node.name for node, before, now in zip(self.instance.compiled.nodes, self._counts, counts)
                     if now != before]
         self._counts = counts
@@ -115,16 +114,9 @@ class SceneSection:
             record["rays"] = rays
         return record
 
-    def _rays_on_close(self, manager, samples: dict) -> dict:
-        rays = {}
-        statuses = self._gripper_status
-        for path, sample in samples.items():
-            previous = statuses.get(path, "Open")
-            statuses[path] = sample.status
-            if previous == "Open" and sample.status != "Open":
-                component = manager.component(path)
-                rays[path] = {"limits": force_limits(component), "rays": close_rays(self.world, component)}
-        return rays
+    def _rays(self, closing: list) -> dict:
+        return {component.path: {"limits": force_limits(component), "rays": close_rays(self.world, component)}
+                for component in closing}
 
 
 def close_rays(world, component) -> list[dict]:

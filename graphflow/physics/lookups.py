@@ -7,6 +7,8 @@ cleared on every rebuild).
 """
 from __future__ import annotations
 
+from array import array
+from functools import partial
 from typing import Any, Callable, Iterable
 
 from graphflow.physics.handles import ArticulationHandle, BodyHandle, BuiltScene
@@ -14,9 +16,8 @@ from graphflow.poses import IDENTITY_POSE, Pose, compose, relative
 from graphflow.usd.description import StageDescription
 from graphflow.world import WorldError
 
-# body_poses' plan for one list of paths (see _pose_plan); the inertial poses are PyBullet's tuples
-PosePlan = tuple[list[tuple[int, int]], list[tuple[int, list[int], list[int]]], list[Pose],
-                 list[tuple[Any, Pose] | None]]
+# body_poses' plan for one list of paths (see _pose_plan)
+PosePlan = tuple[list[int], list[tuple[int, list[int]]], list[int], list[Pose], list[tuple[array, Pose] | None]]
 
 
 class SceneLookups:
@@ -114,45 +115,39 @@ class SceneLookups:
     def read_body_poses(self, paths: Iterable[str]) -> Callable[[], list[Pose]]:
         """``body_poses`` in two halves: the bodies' states are read now, their prim poses composed when the
         result is called. A recorder captures on every sampled tick and encodes later, so the run pays only
-        the read. A body whose inertial pose is what it was at the previous composition (at rest, a fixed
-        base) gets the pose composed then instead of composing it again."""
+        the read, kept as one array of doubles (7 a body: a long run's reads add nothing for the garbage
+        collector to visit)."""
         key = tuple(paths)
         plan = self._pose_plans.get(key)
         if plan is None:
             plan = self._pose_plans[key] = self._pose_plan(key)
-        bases, link_groups, prim_in_inertial, last = plan
-        inertial: list = [None] * len(key)
-        for index, body_id in bases:
-            inertial[index] = self.client.getBasePositionAndOrientation(body_id)
-        for body_id, links, indices in link_groups:
-            for index, state in zip(indices, self.client.getLinkStates(body_id, links, computeForwardKinematics=1)):
-                inertial[index] = (state[0], state[1])
-
-        def composed() -> list[Pose]:
-            poses = []
-            for index, pose in enumerate(inertial):
-                previous = last[index]
-                if previous is None or previous[0] != pose:
-                    previous = last[index] = (pose, compose(pose, prim_in_inertial[index]))
-                poses.append(previous[1])
-            return poses
-        return composed
+        client = self.client
+        read = [c for body_id in plan[0] for part in client.getBasePositionAndOrientation(body_id) for c in part]
+        for body_id, links in plan[1]:
+            states = client.getLinkStates(body_id, links, computeForwardKinematics=1)
+            read += [c for state in states for c in state[0] + state[1]]   # a link state begins with its inertial pose
+        return partial(_composed_poses, plan, array("d", read))
 
     def _pose_plan(self, paths: tuple[str, ...]) -> PosePlan:
-        """(base index and body id pairs, (body id, links, indices) per multibody, each prim frame in its inertial
-        frame, each body's last (inertial pose, pose) read: None until the first)."""
+        """(base body ids, (body id, links) per multibody, each read slot's index in *paths* (bases first, then each
+        multibody's links), each slot's prim frame in its inertial frame, each slot's last (inertial position and
+        orientation read, as 7 doubles; pose): None until the first)."""
         handles = []
         for path in paths:
             if path not in self.scene.bodies:
                 raise WorldError(f"{path} is not a rigid body of this stage")
             handles.append(self.scene.bodies[path])
-        bases = [(index, handle.body_id) for index, handle in enumerate(handles) if handle.link == -1]
+        order = [index for index, handle in enumerate(handles) if handle.link == -1]
+        bases = [handles[index].body_id for index in order]
         grouped: dict[int, list[int]] = {}
         for index, handle in enumerate(handles):
             if handle.link != -1:
                 grouped.setdefault(handle.body_id, []).append(index)
-        link_groups = [(body_id, [handles[i].link for i in indices], indices) for body_id, indices in grouped.items()]
-        return bases, link_groups, [handle.prim_in_inertial for handle in handles], [None] * len(handles)
+        link_groups = []
+        for body_id, indices in grouped.items():
+            link_groups.append((body_id, [handles[index].link for index in indices]))
+            order += indices
+        return bases, link_groups, order, [handles[index].prim_in_inertial for index in order], [None] * len(order)
 
     def _prim_offset(self, prim_path: str) -> tuple[str | None, Pose]:
         """(nearest body ancestor or None, the prim's pose in it), from the stage's authored transforms."""
@@ -216,3 +211,17 @@ def _local_to_world(prim):
         matrix = local if xformable.GetResetXformStack() else local * matrix
     return matrix
 
+
+def _composed_poses(plan: PosePlan, read: array) -> list[Pose]:
+    """The prim poses of one ``read_body_poses`` read, in its paths' order. A body whose inertial pose is what
+    it was at the previous composition (at rest, a fixed base) gets the pose composed then."""
+    _bases, _links, order, prim_in_inertial, last = plan
+    poses: list = [None] * len(order)
+    for slot, index in enumerate(order):
+        inertial = read[7 * slot:7 * slot + 7]
+        previous = last[slot]
+        if previous is None or previous[0] != inertial:
+            x, y, z, qx, qy, qz, qw = inertial
+            previous = last[slot] = (inertial, compose(((x, y, z), (qx, qy, qz, qw)), prim_in_inertial[slot]))
+        poses[index] = previous[1]
+    return poses
