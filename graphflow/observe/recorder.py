@@ -9,8 +9,8 @@ the capture. Both go through the same ``_encode``: the records are identical.
 """
 from __future__ import annotations
 
-from itertools import compress, islice
-from operator import is_not
+import pickle
+from itertools import islice
 from typing import IO, Any, Iterator, Sequence
 
 from graphflow.observe.trace import (
@@ -68,8 +68,6 @@ class TraceRecorder:
         self._sources = [(outputs, name) for outputs, name, _key in slots]   # where each data output lives
         self._keys = [key for _outputs, _name, key in slots]
         self._raw: list[Any] = [_MISSING] * len(slots)   # each output as last encoded, to skip unchanged ones
-        self._immutable: list[Any] = [_MISSING] * len(slots)   # each output's object when last found immutable
-        self._slot_indices = range(len(slots))
         self._outputs = {key: to_json_value(outputs[name]) for outputs, name, key in slots}
         self._scene = SceneSection(simulation)
         description = getattr(simulation.world, "description", None)
@@ -97,24 +95,20 @@ class TraceRecorder:
     def _capture(self) -> None:
         """Append what the tick's record is made of to ``_captured``, read now (later ticks overwrite it).
 
-        One flat list of plain values (the order ``_encode`` reads them in), not objects per tick: the
-        garbage collector does not track floats and strings, so a long run's captures do not make its
-        collections more frequent or slower (containers are made only where there is no other way: the
-        sampled poses, read now and composed when encoded, are an array and the function composing them)."""
+        One flat list (the order ``_encode`` reads it in) of plain values and compact strings, not objects
+        per tick: what a long run keeps is small and gives the garbage collector nothing to visit. The
+        output values are marshalled (the nodes' own objects are freed as they would be without a
+        report); the sampled poses are read now and composed when encoded (an array and the function
+        composing it)."""
         instance, world, flat = self.instance, self.simulation.world, self._captured
         pulses = instance.pulse_log or ()
         flat += (instance.tick_count, world.time, len(pulses))
         flat += map(self._pulse_texts.__getitem__, pulses)
         values = [outputs[name] for outputs, name in self._sources]
-        immutable = self._immutable
-        for index in compress(self._slot_indices, map(is_not, values, immutable)):   # a new object in the slot
-            value = values[index]
-            kind = type(value)
-            if kind in _SCALAR_TYPES or (kind is tuple and set(map(type, value)) <= _SCALAR_TYPES):
-                immutable[index] = value   # immutable: capturing the reference captures the value
-            else:
-                values[index] = to_json_value(value)   # a list or array a node may change in place: a copy
-        flat += values
+        try:
+            flat.append(pickle.dumps(values, _PICKLE))   # a deep copy in one compact string, whatever a node does next
+        except _UNPICKLABLE:   # some value pickle cannot copy: that one as its JSON value, now
+            flat.append(pickle.dumps([_picklable(value) for value in values], _PICKLE))
         events = instance.events
         if events and events[-1].tick == instance.tick_count:
             lines = []
@@ -155,7 +149,7 @@ class TraceRecorder:
         pulses = list(islice(items, take()))
         if pulses:
             record["pulses"] = pulses
-        changed = self._changed_outputs(list(islice(items, len(self._keys))))
+        changed = self._changed_outputs(pickle.loads(take()))
         if changed:
             record["outputs"] = changed
         logs, topics = take(), take()
@@ -190,12 +184,14 @@ class TraceRecorder:
             self.stream.write(dumps_record(record) + "\n")
 
     def _changed_outputs(self, values: list) -> dict[str, Any]:
-        """Outputs whose value changed; an immutable value equal to the last one is skipped unconverted."""
+        """Outputs whose value changed; a scalar, or a tuple of scalars, equal to the last one captured is skipped
+        unconverted (the captures are copies, so equal means equal then and now)."""
         changed, written, last_raw, keys = {}, self._outputs, self._raw, self._keys
         for index, raw in enumerate(values):
             previous = last_raw[index]
             kind = type(raw)
-            if kind is type(previous) and _unchanged(kind, previous, raw):
+            plain = kind in _SCALAR_TYPES or (kind is tuple and set(map(type, raw)) <= _SCALAR_TYPES)   # as written
+            if plain and kind is type(previous) and previous == raw:
                 continue
             last_raw[index] = raw
             key = keys[index]
@@ -204,7 +200,7 @@ class TraceRecorder:
                 if old is _MISSING or (old != raw and not (raw != raw and old != old)):   # NaN stays NaN
                     changed[key] = written[key] = raw
                 continue
-            value = list(raw) if kind is tuple else to_json_value(raw)   # a captured tuple holds scalars only
+            value = list(raw) if plain else to_json_value(raw)
             if _changed(written.get(key, _MISSING), value):
                 changed[key] = written[key] = value
         return changed
@@ -245,17 +241,20 @@ class _PulseTexts(dict):
         return text
 
 
+def _picklable(value: Any) -> Any:
+    """*value* when pickle can copy it, else its JSON value as the trace would write it."""
+    try:
+        pickle.dumps(value, _PICKLE)
+        return value
+    except _UNPICKLABLE:
+        return to_json_value(value)
+
+
+_PICKLE = pickle.HIGHEST_PROTOCOL
+_UNPICKLABLE = (pickle.PicklingError, TypeError, AttributeError)   # what pickle raises for what it cannot copy
 _MISSING = object()
 _SCALARS = (float, int, str, bool, type(None))
 _SCALAR_TYPES = frozenset(_SCALARS)
-
-
-def _unchanged(kind: type, previous: Any, raw: Any) -> bool:
-    """The same immutable value as last tick: a scalar, or a tuple (``_capture`` keeps only tuples of scalars;
-    lists and arrays a node may mutate in place were copied, and copies always go the long way)."""
-    if kind in _SCALARS or kind is tuple:
-        return previous is raw or previous == raw
-    return False
 
 
 def _changed(previous: Any, value: Any) -> bool:
