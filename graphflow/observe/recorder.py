@@ -10,7 +10,7 @@ the capture. Both go through the same ``_encode``: the records are identical.
 from __future__ import annotations
 
 import pickle
-from itertools import islice
+from operator import getitem
 from typing import IO, Any, Iterator, Sequence
 
 from graphflow.observe.trace import (
@@ -48,11 +48,12 @@ class TraceRecorder:
         from graphflow.observe.trace_scene import SceneSection
 
         self.simulation = simulation
+        self._world = simulation.world
         self.stream = stream
         self.records = records
         self.deferred = deferred and stream is None
         self.instance = simulation.instance
-        self._captured: list = []                  # ticks captured but not yet encoded, flat (see _capture)
+        self._captured: list = []                  # ticks captured but not yet encoded, flat (see on_tick)
         self._pending = 0                          # how many ticks _captured holds
         self._grippers: dict[str, Any] = {}        # each gripper's sample as last encoded
         self._manager = None                       # the world's gripper manager, once a node has made it
@@ -65,7 +66,8 @@ class TraceRecorder:
         slots = [(database.outputs.__dict__, name, f"{node.name}.{name}")
                  for node, database, names in zip(nodes, databases, exec_names)
                  for name in database.outputs.__dict__ if name not in names]
-        self._sources = [(outputs, name) for outputs, name, _key in slots]   # where each data output lives
+        self._output_dicts = [outputs for outputs, _name, _key in slots]   # where each data output lives: its
+        self._output_names = [name for _outputs, name, _key in slots]      # node's outputs, by name
         self._keys = [key for _outputs, _name, key in slots]
         self._raw: list[Any] = [_MISSING] * len(slots)   # each output as last encoded, to skip unchanged ones
         self._outputs = {key: to_json_value(outputs[name]) for outputs, name, key in slots}
@@ -76,11 +78,31 @@ class TraceRecorder:
         self._write_header(graph, list(randomized))
         simulation.add_listener(self)
 
-    reads_pulses = True   # the instance logs each tick's exec pulses for _capture (GraphInstance.pulse_log)
+    reads_pulses = True   # the instance logs each tick's exec pulses for on_tick (GraphInstance.pulse_log)
 
     def on_tick(self, simulation, tick: int) -> None:
-        """Capture the tick that just ran; write its record now when there is a stream."""
-        self._capture()
+        """Capture the tick that just ran (below); write its record now unless deferred.
+
+        The capture is read now (later ticks overwrite it): per tick, one pickle of plain values (the
+        time, pulses, output values, log lines, topics, gripper samples, compute counts: a deep copy in
+        one compact string, so a long run keeps little and the nodes' own objects are freed as in a run
+        without a report), then the scene's body poses when sampled (read now, composed when encoded) and
+        the rays of a close that began, or None each. Every call here runs each tick, so there are few."""
+        instance, world = self.instance, self._world
+        events = instance.events
+        row = [instance.tick_count, world.time, list(map(self._pulse_texts.__getitem__, instance.pulse_log or ())),
+               list(map(getitem, self._output_dicts, self._output_names)),
+               self._log_lines() if events and events[-1].tick == instance.tick_count else None,
+               published_this_tick(world) or None]
+        closing = self._sample_grippers(world, row)
+        poses, rays = self._scene.capture(closing, row)
+        try:
+            blob = pickle.dumps(row, _PICKLE)
+        except _UNPICKLABLE:   # some output value pickle cannot copy: that one as its JSON value, now
+            row[_VALUES] = [_picklable(value) for value in row[_VALUES]]
+            blob = pickle.dumps(row, _PICKLE)
+        self._captured += (blob, poses, rays)
+        self._pending += 1
         if not self.deferred:
             self.flush()
 
@@ -92,80 +114,59 @@ class TraceRecorder:
             self._emit(self._encode(items))
         self._pending = 0
 
-    def _capture(self) -> None:
-        """Append what the tick's record is made of to ``_captured``, read now (later ticks overwrite it).
+    def _log_lines(self) -> list:
+        """The tick's log lines as (node, level, message)."""
+        events, tick = self.instance.events, self.instance.tick_count
+        lines = []
+        for event in reversed(events):   # this tick's lines are the newest
+            if event.tick != tick:
+                break
+            lines.append((event.node, event.level, event.message))
+        return lines[::-1]
 
-        One flat list (the order ``_encode`` reads it in) of plain values and compact strings, not objects
-        per tick: what a long run keeps is small and gives the garbage collector nothing to visit. The
-        output values are marshalled (the nodes' own objects are freed as they would be without a
-        report); the sampled poses are read now and composed when encoded (an array and the function
-        composing it)."""
-        instance, world, flat = self.instance, self.simulation.world, self._captured
-        pulses = instance.pulse_log or ()
-        flat += (instance.tick_count, world.time, len(pulses))
-        flat += map(self._pulse_texts.__getitem__, pulses)
-        values = [outputs[name] for outputs, name in self._sources]
-        try:
-            flat.append(pickle.dumps(values, _PICKLE))   # a deep copy in one compact string, whatever a node does next
-        except _UNPICKLABLE:   # some value pickle cannot copy: that one as its JSON value, now
-            flat.append(pickle.dumps([_picklable(value) for value in values], _PICKLE))
-        events = instance.events
-        if events and events[-1].tick == instance.tick_count:
-            lines = []
-            for event in reversed(events):   # this tick's lines are the newest
-                if event.tick != instance.tick_count:
-                    break
-                lines.append((event.node, event.level, event.message))
-            flat.append(lines[::-1])
-        else:
-            flat.append(None)
-        flat.append(published_this_tick(world) or None)   # ROS 2 messages published during the tick
+    def _sample_grippers(self, world, row: list) -> list | None:
+        """Append each surface gripper's (path, sample fields) to *row*, as a list; return the grippers whose
+        close began this tick (the scene records their rays), or None."""
         manager = self._manager
         if manager is None:
             manager = self._manager = surface_gripper_manager(world)
-        closing = None   # grippers whose close began this tick: the scene records their rays
-        if manager is None:
-            flat.append(0)
-        else:
+        closing, samples = None, []
+        if manager is not None:
             components, statuses = manager.components, self._statuses
-            flat.append(len(components))
             for path in sorted(components):
                 component = components[path]
                 fields = gripper_fields(world, component)
-                flat.append(path)
-                flat += fields
+                samples.append((path, *fields))
                 if fields[0] != statuses.get(path, "Open"):
                     if statuses.get(path, "Open") == "Open":
                         closing = [*(closing or ()), component]
                     statuses[path] = fields[0]
-        self._scene.capture(closing, flat)
-        self._pending += 1
+        row.append(samples)
+        return closing
 
     def _encode(self, items: Iterator) -> dict:
         """The next captured tick's record (*items* reads ``_captured`` in order): pulses, changed outputs,
         changed gripper fields, topics, log lines, scene fields."""
         take = items.__next__
-        record: dict[str, Any] = {"tick": take(), "t": take()}
-        pulses = list(islice(items, take()))
+        tick, time, pulses, values, logs, topics, samples, counts = pickle.loads(take())
+        record: dict[str, Any] = {"tick": tick, "t": time}
         if pulses:
             record["pulses"] = pulses
-        changed = self._changed_outputs(pickle.loads(take()))
+        changed = self._changed_outputs(values)
         if changed:
             record["outputs"] = changed
-        logs, topics = take(), take()
         grippers = {}
-        for _gripper in range(take()):
-            path = take()
-            sample = GripperSample(take(), take(), take(), take(), take())
+        for path, *fields in samples:
+            sample = GripperSample(*fields)
             if path in self._unused:
                 continue    # a stage gripper the graph does not use
             previous = self._grippers.get(path)
             self._grippers[path] = sample
             if previous == sample and sample.force == sample.force and sample.held_z == sample.held_z:
                 continue    # unchanged (NaN never equals itself: those go the long way)
-            fields = sample.fields()
+            fields_now = sample.fields()
             old = previous.fields() if previous is not None else {}
-            delta = {key: value for key, value in fields.items() if _changed(old.get(key, _MISSING), value)}
+            delta = {key: value for key, value in fields_now.items() if _changed(old.get(key, _MISSING), value)}
             if delta:
                 grippers[path] = delta
         if grippers:
@@ -174,7 +175,7 @@ class TraceRecorder:
             record["topics"] = topics
         if logs:
             record["log"] = [{"node": node, "level": level, "message": message} for node, level, message in logs]
-        record.update(self._scene.encode(items))
+        record.update(self._scene.encode(counts, take(), take()))
         return record
 
     def _emit(self, record: dict) -> None:
@@ -251,6 +252,7 @@ def _picklable(value: Any) -> Any:
 
 
 _PICKLE = pickle.HIGHEST_PROTOCOL
+_VALUES = 3   # where a captured row holds the output values
 _UNPICKLABLE = (pickle.PicklingError, TypeError, AttributeError)   # what pickle raises for what it cannot copy
 _MISSING = object()
 _SCALARS = (float, int, str, bool, type(None))

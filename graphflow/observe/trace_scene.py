@@ -11,8 +11,7 @@ description; nothing is timed, so the section is as deterministic as the rest.
 """
 from __future__ import annotations
 
-from array import array
-from typing import Any, Iterator
+from typing import Any
 
 from graphflow.poses import AXIS_VECTORS, quat_rotate
 
@@ -80,27 +79,24 @@ class SceneSection:
         links = sorted({path for articulation in description.articulations for path in articulation.bodies})
         return {"scene": {"upAxis": description.up_axis, "poseEvery": self.pose_every, "bodies": bodies, "links": links}}
 
-    def capture(self, closing: list | None, flat: list) -> None:
-        """Append what ``encode`` needs of this tick to *flat*, read now: compute counts, the sampled poses
-        (read now, composed when encoded) or None, the rays of the surface grippers in *closing* (those whose
-        close began this tick; None for none) or None."""
-        flat.append(array("q", self.instance.compute_counts))   # machine integers: nothing for the collector
+    def capture(self, closing: list | None, row: list) -> tuple:
+        """Append the compute counts to *row* (a list of plain values, copied right after); return what else
+        ``encode`` needs of this tick, read now: the sampled poses (read now, composed when encoded) or None,
+        the rays of the surface grippers in *closing* (those whose close began this tick) or None."""
+        row.append(self.instance.compute_counts)
+        poses = None
         if self.moving and self.instance.tick_count % self.pose_every == 0:
-            flat.append(self.world.read_body_poses(self.moving))   # composed when encoded
-        else:
-            flat.append(None)
-        flat.append(self._rays(closing) if closing else None)
+            poses = self.world.read_body_poses(self.moving)
+        return poses, self._rays(closing) if closing else None
 
-    def encode(self, items: Iterator) -> dict:
-        """A tick's ``computed`` nodes, sampled ``poses`` that changed and ``rays``, read from its capture by *items*."""
+    def encode(self, counts: list, sampled, rays: dict | None) -> dict:
+        """A tick's ``computed`` nodes, sampled ``poses`` that changed and ``rays``, from its capture."""
         record: dict[str, Any] = {}
-        counts = next(items)
         computed = [node.name for node, before, now in zip(self.instance.compiled.nodes, self._counts, counts)
                     if now != before]
         self._counts = counts
         if computed:
             record["computed"] = computed
-        sampled = next(items)
         if sampled is not None:
             poses = {}
             for path, (position, orientation) in zip(self.moving, sampled()):
@@ -109,7 +105,6 @@ class SceneSection:
                     poses[path] = self._poses[path] = pose
             if poses:
                 record["poses"] = poses
-        rays = next(items)
         if rays:
             record["rays"] = rays
         return record
