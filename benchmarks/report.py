@@ -133,8 +133,10 @@ def _first_gl_context(playwright, executable) -> float:
 def _open_and_scrub(playwright, executable, report: Path) -> tuple[float, list[float]]:
     browser = _browser(playwright, executable)
     try:
+        # the browser is up, as a person's is when they open the file, and the report is this tab's first
+        # document (navigating from about:blank first, Chrome tears that page's compositor down a second
+        # later: with software GL that blocked the report for 0.3-0.6 s in about two loads of five)
         page = browser.new_page(viewport={"width": 1600, "height": 1000})
-        page.goto("about:blank")   # the browser is up, as a person's is when they open the file
         started = time.perf_counter()
         page.goto(report.resolve().as_uri())
         page.wait_for_function("window.graphflowReport !== undefined", timeout=30000, polling=5)
