@@ -1,8 +1,9 @@
 """Recording a run's trace (docs/trace.md): each tick is captured cheaply, then encoded as its record.
 
-Capturing appends what cannot wait (values a node may overwrite, the gripper's sample,
-sampled body poses, this tick's pulses and log lines) to one flat list of plain
-values; encoding reads it back into the records of changes. A trace written to a stream encodes
+Capturing keeps what cannot wait (values a node may overwrite, the gripper's sample,
+sampled body poses, this tick's pulses and log lines): one pickle of the tick's plain
+values, the poses' reads and a close's rays; encoding reads them back into the records
+of changes. A trace written to a stream encodes
 every tick as it ends; a run report keeps its records in memory and encodes the
 captured ticks only when they are read (``flush``), so the run itself pays only for
 the capture. Both go through the same ``_encode``: the records are identical.
@@ -60,7 +61,6 @@ class TraceRecorder:
         self._statuses: dict[str, str] = {}        # each gripper's status token as last captured
         nodes = self.instance.compiled.nodes
         self._pulse_texts = _PulseTexts(node.name for node in nodes)   # (node index, output, state) -> text
-        self._node_names = [node.name for node in nodes]
         databases = [self.instance.database(node.name) for node in nodes]
         exec_names = [frozenset(a.name for a in node.spec.exec_outputs) for node in nodes]
         slots = [(database.outputs.__dict__, name, f"{node.name}.{name}")
