@@ -253,7 +253,9 @@ def _picklable(value: Any) -> Any:
 
 _PICKLE = pickle.HIGHEST_PROTOCOL
 _VALUES = 3   # where a captured row holds the output values
-_UNPICKLABLE = (pickle.PicklingError, TypeError, AttributeError)   # what pickle raises for what it cannot copy
+# pickle runs each object's own reduce code, so what it raises for a value it cannot copy varies: PicklingError,
+# TypeError, AttributeError, and RuntimeError from USD's (Boost.Python) types such as Usd.Prim and Sdf.Path
+_UNPICKLABLE = Exception
 _MISSING = object()
 _SCALARS = (float, int, str, bool, type(None))
 _SCALAR_TYPES = frozenset(_SCALARS)

@@ -4,6 +4,7 @@ import io
 import json
 
 import numpy
+from pxr import Gf, Sdf
 
 from graphflow.observe.recorder import TraceRecorder
 from graphflow.testing import GraphHarness
@@ -13,8 +14,9 @@ GRAPH = {"nodes": [{"name": "tick", "type": "omni.graph.action.OnTick", "inputs"
 
 
 def _record(deferred: bool) -> list[dict]:
-    """Ticks 1-5 with ``held.value`` set as a node might: a list, the same list grown in place, numpy scalars
-    inside a tuple, a tuple holding a list that is then emptied in place, a list holding a function."""
+    """Ticks 1-6 with ``held.value`` set as a node might: a list, the same list grown in place, numpy scalars
+    inside a tuple, a tuple holding a list that is then emptied in place, a list holding a function, USD
+    values pickle cannot copy."""
     graph = GraphHarness(GRAPH)
     records: list = []
     stream = None if deferred else io.StringIO()
@@ -33,6 +35,8 @@ def _record(deferred: bool) -> list[dict]:
     inner.clear()
     outputs["value"] = [1.0, lambda: None]   # pickle cannot copy a lambda: the value is its JSON form, read now
     graph.run(ticks=1)
+    outputs["value"] = (Sdf.Path("/World/Cube"), Gf.Quatd(1, 0, 0, 0))   # USD's types raise RuntimeError in pickle
+    graph.run(ticks=1)
     recorder.flush()
     if stream is not None:
         assert [json.loads(line) for line in stream.getvalue().splitlines()] == records
@@ -42,7 +46,7 @@ def _record(deferred: bool) -> list[dict]:
 def test_each_tick_keeps_the_value_it_had_then():
     ticks = _record(deferred=True)[1:]
     assert [record["outputs"]["held.value"] for record in ticks] == [
-        [1.0, 2.0], [1.0, 2.0, 3.0], [0.5, 7], ["path", [4.0]], [1.0, "<function>"]]
+        [1.0, 2.0], [1.0, 2.0, 3.0], [0.5, 7], ["path", [4.0]], [1.0, "<function>"], ["<Path>", "<Quatd>"]]
 
 
 def test_a_report_recording_gives_a_streamed_traces_records():
