@@ -89,7 +89,7 @@ def surface_gripper_manager(world):
 class GripperSample(NamedTuple):
     """One gripper as seen after a tick: status, gripped objects, holding force, held height, reason.
 
-    A tuple, so a recorder can keep its fields flat, in this order (``TraceRecorder._capture``)."""
+    A tuple: a recorder keeps its fields in this order (``gripper_fields``, ``TraceRecorder.on_tick``)."""
 
     status: str
     gripped: tuple[str, ...]
