@@ -148,3 +148,21 @@ def test_variables_take_kits_type_spellings_and_a_compound_node_is_refused_with_
     assert harness.instance.variables["count"] == 4.0
     with pytest.raises(BadInput, match="node 'inner': dict as its type: compound nodes .* are not built here"):
         og.Controller.edit(path, {keys.CREATE_NODES: [("inner", {keys.CREATE_NODES: [("t", "omni.graph.action.OnTick")]})]})
+
+
+def test_a_node_answers_its_graph_and_every_port_and_attributes_key_by_path():
+    """Kit's og.Node.get_graph/get_attributes, og.Attribute.get_name and attributes usable as dict keys; OnTick's
+    ports as Kit's node library reference lists them; og.Controller.create_variable adds a graph variable."""
+    path = next(_paths)
+    graph, (tick, _text), _, _ = built(path)
+    node = og.Controller.node(f"{path}/tick")
+    assert node.get_graph() is graph
+    names = [attribute.get_name() for attribute in node.get_attributes()]
+    assert set(names) == {"inputs:framePeriod", "inputs:onlyPlayback", "outputs:tick", "outputs:deltaSeconds",
+                          "outputs:time", "outputs:frame", "outputs:timeSinceStart", "outputs:absoluteSimTime",
+                          "outputs:isPlaying"}
+    seen = {node.get_attribute("inputs:onlyPlayback"): "first"}
+    assert seen[og.Controller.attribute(f"{path}/tick.inputs:onlyPlayback")] == "first"   # equal and same hash
+    assert node.get_attribute("inputs:onlyPlayback") != node.get_attribute("inputs:framePeriod")
+    og.Controller.create_variable(path, "speed", "double")
+    assert {v.name: v.type for v in graph.document.variables}["speed"] == "double"
